@@ -30,7 +30,14 @@
 //!   (`rst(Axis := ax);` then `rst(Axis := ax, Execute := go);`; before: E4023 at the first);
 //! - `check Demo.sln` from the solution's own folder (before: the `.sln` read as ST, 44 errors),
 //!   and a solution whose PLC project is missing: one E1079 at the `PrjFilePath` that names it
-//!   (robinruys/NLR_internship; before: an unlocated E9001 about the folder, exit 2).
+//!   (robinruys/NLR_internship; before: an unlocated E9001 about the folder, exit 2);
+//! - `run` of inputs with no PROGRAM (a CODESYS export of one function block): W1441 says that
+//!   nothing runs (before: empty cycles, exit 0, silently);
+//! - an array indexed by a value of an enumeration without `{attribute 'strict'}` (ISIS:
+//!   `arr[E_P.B]`; before: E1021 with a hint to convert with REAL_TO_DINT): its number, W1439;
+//! - diagnostics of invalid inputs: a FOR without `:=` is one error (before: four, msftrncs's
+//!   test.st), a library-qualified name is never shown by its internal spelling (`__o_Bar`,
+//!   `__3_EventLogger_FB_TcAlarm`), and W1003's hint for an ST function is ST.
 
 mod common;
 use common::{ladderc, rejected_heads, run_text, run_traced_files};
@@ -528,4 +535,94 @@ fn a_solution_is_read_from_its_own_folder_and_a_missing_plc_project_is_located()
             "cycle,time_ms,MAIN.n\n0,0,1\n1,10,2\n"
         );
     }
+}
+
+/// `run` of a file of function blocks only: the cycles run, and W1441 at the first POU says that
+/// no program calls them; with a program beside them, no W1441.
+#[test]
+fn run_without_a_program_says_nothing_runs() {
+    let fb = "FUNCTION_BLOCK FB_Count\nVAR_INPUT bIn : BOOL; END_VAR\nVAR_OUTPUT nCount : INT; END_VAR\nIF bIn THEN nCount := nCount + 1; END_IF\nEND_FUNCTION_BLOCK\n";
+    let (trace, stderr) = run_text("fb.st", fb, 2, "");
+    assert_eq!(trace, "cycle,time_ms\n0,0\n1,10\n");
+    assert!(
+        stderr.contains("fb.st:1:1: warning[W1441]: nothing to run: the inputs declare no PROGRAM (1 function block(s) and function(s)"),
+        "{stderr}"
+    );
+    let with_program =
+        format!("{fb}PROGRAM Main\nVAR c : FB_Count; END_VAR\nc(bIn := TRUE);\nEND_PROGRAM\n");
+    let (trace, stderr) = run_text("both.st", &with_program, 2, "Main.c.nCount");
+    assert_eq!(trace, "cycle,time_ms,Main.c.nCount\n0,0,1\n1,10,2\n");
+    assert!(!stderr.contains("W1441"), "{stderr}");
+}
+
+/// An enumeration without `{attribute 'strict'}` indexes an array by its number (W1439); a
+/// strict one and a REAL are E1021, each with the conversion to write.
+#[test]
+fn a_loose_enumeration_indexes_an_array_by_its_number() {
+    let src = "TYPE E_P : (A := 1, B := 2, C := 3); END_TYPE
+PROGRAM Main
+VAR arr : ARRAY[1..3] OF LREAL; x : LREAL; END_VAR
+arr[E_P.B] := 5.0;
+x := arr[E_P.C] + arr[E_P.B];
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("index.st", src, 1, "Main.arr[2],Main.x");
+    assert_eq!(trace, "cycle,time_ms,Main.arr[2],Main.x\n0,0,5,5\n");
+    assert!(stderr.contains("index.st:4:5: warning[W1439]"), "{stderr}");
+    let heads = rejected_heads(
+        "strict.st",
+        "{attribute 'strict'}\nTYPE E_S : (X := 1, Y := 2); END_TYPE\nPROGRAM Main\nVAR arr : ARRAY[1..3] OF INT; r : REAL := 1.0; END_VAR\narr[E_S.Y] := 5;\narr[r] := 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        heads,
+        [
+            "strict.st:5:5: error[E1021]: an array index must be an integer, not E_S",
+            "strict.st:6:5: error[E1021]: an array index must be an integer, not REAL",
+        ]
+    );
+    let (_, lines) = common::check_text(
+        "strict.st",
+        "{attribute 'strict'}\nTYPE E_S : (X := 1, Y := 2); END_TYPE\nPROGRAM Main\nVAR arr : ARRAY[1..3] OF INT; r : REAL := 1.0; END_VAR\narr[E_S.Y] := 5;\narr[r] := 1;\nEND_PROGRAM\n",
+    );
+    assert!(
+        lines[0].ends_with("(hint: convert the index to an integer: TO_DINT(...))"),
+        "{lines:?}"
+    );
+    assert!(
+        lines[1].ends_with("(hint: convert the index: REAL_TO_DINT(...))"),
+        "{lines:?}"
+    );
+}
+
+/// Invalid inputs get one diagnostic per cause, in the user's words: a FOR without `:=`, a
+/// library-qualified call where a CASE label belongs, a library-qualified type in a call chain,
+/// and an ST function that never sets its result.
+#[test]
+fn invalid_inputs_get_one_diagnostic_in_the_users_words() {
+    let for_src = "PROGRAM p\nVAR\n  i : USINT;\n  n : USINT;\nEND_VAR\nIF TRUE THEN\n  FOR i TO 5 DO\n    n := n + 1;\n  END_FOR;\nEND_IF;\nEND_PROGRAM\n";
+    assert_eq!(
+        rejected_heads("for.st", for_src),
+        ["for.st:7:9: error[E0100]: expected `:=` after the FOR control variable, found `TO`"]
+    );
+    let case_src =
+        "PROGRAM p\nVAR i : INT; END_VAR\nCASE i OF\n  Foo.Bar();\nEND_CASE;\nEND_PROGRAM\n";
+    assert_eq!(
+        rejected_heads("case.st", case_src),
+        [
+            "case.st:4:3: error[E1032]: `Foo` is neither a variable nor a library ladderc provides",
+            "case.st:4:3: error[E0100]: expected a CASE label such as `1:`, `2, 3:` or `4..6:`, found a library-qualified name",
+        ]
+    );
+    let chain_src = "FUNCTION_BLOCK FB_X\nVAR\n    fbAlarm : Tc3_EventLogger.FB_TcAlarm;\nEND_VAR\nMETHOD M : BOOL\nfbAlarm.ipArguments.Clear().AddString(1);\nEND_METHOD\nEND_FUNCTION_BLOCK\nPROGRAM MAIN\nVAR x : FB_X; END_VAR\nx.M();\nEND_PROGRAM\n";
+    assert_eq!(
+        rejected_heads("chain.st", chain_src),
+        ["chain.st:3:15: error[E1032]: `Tc3_EventLogger` is neither a variable nor a library ladderc provides"]
+    );
+    let pack_src = "FUNCTION Pack : BOOL\nVAR_INPUT\n  b : BOOL;\nEND_VAR\nVAR_IN_OUT\n  w : WORD;\nEND_VAR\n  w.0 := b;\nEND_FUNCTION\n\nPROGRAM p\nVAR\n  w : WORD;\nEND_VAR\n  Pack(b := TRUE, w := w);\nEND_PROGRAM\n";
+    let (code, lines) = common::check_text("pack.st", pack_src);
+    assert_eq!(code, Some(0));
+    assert_eq!(
+        lines,
+        ["pack.st:1:10: warning[W1003]: function `Pack` never sets its result (hint: assign the result: `Pack := ...;` in ST, `ST Pack` in IL (it is 0/FALSE/empty otherwise))"]
+    );
 }

@@ -723,6 +723,33 @@ fn add_staticlib(
     }
 }
 
+/// W1441 at the first POU when the inputs declare no PROGRAM and no CONFIGURATION: the cycles
+/// `run` runs do nothing.
+fn nothing_to_run(lowered: &pipeline::Lowered) -> Option<Diagnostic> {
+    let model = lowered.model.as_ref()?;
+    let first = model.pous.first()?;
+    if !model.configurations.is_empty()
+        || model
+            .pous
+            .iter()
+            .any(|p| p.kind == il_frontend::ast::PouKind::Program)
+    {
+        return None;
+    }
+    Some(
+        Diagnostic::warning(
+            diagnostics::code::W1441,
+            format!(
+                "nothing to run: the inputs declare no PROGRAM ({} function block(s) and function(s), which run only when a program calls them)",
+                model.pous.len()
+            ),
+        )
+        .at(first.span)
+        .with_primary_label("a POU no program calls")
+        .with_hint("give the file of the program that uses them as well, or write a PROGRAM that calls them"),
+    )
+}
+
 fn run_program(
     c: &CompileArgs,
     cycle_ms: Option<f64>,
@@ -750,6 +777,7 @@ fn run_program(
     };
     let mut extra = Vec::new();
     let pmac = pmac_text(c, &mut g, &mut extra);
+    extra.extend(nothing_to_run(g.lowered()));
     let code = finish(g.sources(), g.diagnostics(), extra, format);
     let (lowered, program) = (g.lowered(), g.program());
     if let Err(code) = write_pmac(c, pmac, code, format) {

@@ -248,9 +248,9 @@ impl Analyzer<'_> {
                 pou.name.span,
                 format!("function `{}` never sets its result", pou.name.name),
             )
-            .label("no ST into the function's name in its body")
+            .label("the function's name is never written in its body")
             .hint(format!(
-                "store the result with ST {} (it is 0/FALSE/empty otherwise)",
+                "assign the result: `{0} := ...;` in ST, `ST {0}` in IL (it is 0/FALSE/empty otherwise)",
                 pou.name.name
             ));
         }

@@ -509,6 +509,11 @@ impl Body<'_, '_> {
             Ty::Known(Type::Elementary(e)) if super::bit_arith::counted_as(e).is_some() => {
                 self.bit_string_counted(e, ix.span());
             }
+            // CODESYS, TwinCAT: an enumeration without {attribute 'strict'} indexes as its
+            // number (W1439)
+            Ty::Known(t) if super::loose_enum::is_loose(&self.a.model, &t) => {
+                self.enum_as_integer(&t, ix.span());
+            }
             Ty::Lit(var) => {
                 // An index literal is a DINT unless it does not fit.
                 if self.lits.bind(var, &Type::DINT).is_err() {
@@ -520,6 +525,12 @@ impl Body<'_, '_> {
             }
             other => {
                 let d = self.describe(&other);
+                let hint = match &other {
+                    Ty::Known(Type::Elementary(e)) if e.is_real() => {
+                        format!("convert the index: {}_TO_DINT(...)", e.name())
+                    }
+                    _ => "convert the index to an integer: TO_DINT(...)".to_string(),
+                };
                 self.a
                     .error(
                         code::E1021,
@@ -527,7 +538,7 @@ impl Body<'_, '_> {
                         format!("an array index must be an integer, not {d}"),
                     )
                     .label(format!("this is {d}"))
-                    .hint("convert the index (REAL_TO_DINT ...)");
+                    .hint(hint);
             }
         }
     }

@@ -320,6 +320,9 @@ impl<'s, 'd> Parser<'s, 'd> {
         let t = self.cur();
         match &t.tok {
             Tok::Eof => "end of text".into(),
+            // `Lib.Name` of a library ladderc does not provide reaches the parser as `__b_Name`
+            // (`super::qualifiers`, E1032): no identifier can be written so
+            Tok::Ident if self.text(t).starts_with("__") => "a library-qualified name".into(),
             Tok::Ident => format!("name `{}`", self.text(t)),
             Tok::Kw(k) => format!("`{}`", k.spelling()),
             Tok::Int(_) | Tok::Real(_) | Tok::Time(_) | Tok::Str(..) => {
@@ -1087,12 +1090,12 @@ impl<'s, 'd> Parser<'s, 'd> {
                 format!("expected `:=` after the FOR control variable, found {found}"),
                 "write `FOR i := 1 TO 10 DO ... END_FOR;`",
             );
-            return None;
+            return self.abandoned_for(open);
         }
         self.bump();
         let from = self.expr();
         if !self.expect_kw(Kw::To, "after the FOR start value") {
-            return None;
+            return self.abandoned_for(open);
         }
         let to = self.expr();
         let by = if self.at_kw(Kw::By) {
@@ -1114,6 +1117,25 @@ impl<'s, 'd> Parser<'s, 'd> {
             by,
             body,
         })
+    }
+
+    /// A FOR whose header is wrong (already reported): the rest of the header is skipped up to its
+    /// `DO`, the body read (its own errors reported) up to `END_FOR`, so that the loop's end is no
+    /// second error; an empty statement. Without a `DO` before the next `;`, nothing more is read.
+    fn abandoned_for(&mut self, open: Span) -> Option<StmtKind> {
+        while !self.at_kw(Kw::Do)
+            && !self.at_kw(Kw::EndFor)
+            && !matches!(self.peek(), Tok::Semi | Tok::Eof)
+        {
+            self.bump();
+        }
+        if !self.at_kw(Kw::Do) {
+            return None;
+        }
+        self.bump();
+        let _ = self.nested(|p| p.statement_list());
+        self.close_block(Kw::EndFor, open, "FOR");
+        Some(StmtKind::Empty)
     }
 
     /// Whether a condition starts with a well-formed place and `:=` (`b :=`, `st.x :=`, `a[i] :=`,

@@ -102,10 +102,13 @@ impl PouLowering<'_> {
                     // `uut.DoSomething(...).Finish()` with `uut : SomeFunctionBlock` declared
                     // nowhere: the missing type is the cause (sema's E1003 at the declaration,
                     // once), not the chain
+                    // (a library-qualified type, `Lib.T`, written `__b_T`: E1032 named the
+                    // library already)
                     let here = Some(t.span);
-                    if !diags
-                        .iter()
-                        .any(|d| d.code == code::E1003 && d.span == here)
+                    if !t.name.starts_with("__")
+                        && !diags
+                            .iter()
+                            .any(|d| d.code == code::E1003 && d.span == here)
                     {
                         diags.push(
                             Diagnostic::error(code::E1003, format!("unknown type `{}`", t.name))
