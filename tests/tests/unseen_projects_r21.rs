@@ -37,7 +37,10 @@
 //!   `arr[E_P.B]`; before: E1021 with a hint to convert with REAL_TO_DINT): its number, W1439;
 //! - diagnostics of invalid inputs: a FOR without `:=` is one error (before: four, msftrncs's
 //!   test.st), a library-qualified name is never shown by its internal spelling (`__o_Bar`,
-//!   `__3_EventLogger_FB_TcAlarm`), and W1003's hint for an ST function is ST.
+//!   `__3_EventLogger_FB_TcAlarm`), and W1003's hint for an ST function is ST;
+//! - several PLCopen XML files given together (CODESYS exports one object per file): a program
+//!   in one calls a function block of another, in ST and as an FBD box, and uses its structure
+//!   type (before: E3009 "type `FB_Count` is not defined in this project").
 
 mod common;
 use common::{ladderc, rejected_heads, run_text, run_traced_files};
@@ -624,5 +627,99 @@ fn invalid_inputs_get_one_diagnostic_in_the_users_words() {
     assert_eq!(
         lines,
         ["pack.st:1:10: warning[W1003]: function `Pack` never sets its result (hint: assign the result: `Pack := ...;` in ST, `ST Pack` in IL (it is 0/FALSE/empty otherwise))"]
+    );
+}
+
+/// Two PLCopen XML exports given together are one project: the program of one file calls the
+/// function block of the other (an ST call and an FBD box) and declares a variable of its
+/// structure type.
+#[test]
+fn plcopen_files_given_together_see_each_others_pous_and_types() {
+    let dir = tempfile::tempdir().unwrap();
+    let head = |name: &str| {
+        format!(
+            r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <fileHeader companyName="" productName="CODESYS" productVersion="CODESYS V3.5 SP21" creationDateTime="2025-01-01T00:00:00" />
+  <contentHeader name="{name}"><coordinateInfo><fbd><scaling x="1" y="1" /></fbd><ld><scaling x="1" y="1" /></ld><sfc><scaling x="1" y="1" /></sfc></coordinateInfo></contentHeader>
+"#
+        )
+    };
+    let fb = format!(
+        r#"{}  <types><dataTypes>
+    <dataType name="ST_Total"><baseType><struct>
+      <variable name="n"><type><INT /></type></variable>
+      <variable name="busy"><type><BOOL /></type></variable>
+    </struct></baseType></dataType>
+  </dataTypes><pous>
+    <pou name="FB_Count" pouType="functionBlock">
+      <interface>
+        <inputVars><variable name="bIn"><type><BOOL /></type></variable></inputVars>
+        <outputVars><variable name="nCount"><type><INT /></type></variable></outputVars>
+      </interface>
+      <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">IF bIn THEN nCount := nCount + 1; END_IF</xhtml></ST></body>
+    </pou>
+  </pous></types>
+  <instances><configurations /></instances>
+</project>
+"#,
+        head("FB_Count")
+    );
+    let prg = format!(
+        r#"{}  <types><dataTypes /><pous>
+    <pou name="PRG_Main" pouType="program">
+      <interface>
+        <localVars>
+          <variable name="fbC"><type><derived name="FB_Count" /></type></variable>
+          <variable name="fbD"><type><derived name="FB_Count" /></type></variable>
+          <variable name="go"><type><BOOL /></type><initialValue><simpleValue value="TRUE" /></initialValue></variable>
+          <variable name="boxed"><type><INT /></type></variable>
+          <variable name="total"><type><derived name="ST_Total" /></type></variable>
+        </localVars>
+      </interface>
+      <body><FBD>
+        <inVariable localId="1" height="20" width="40"><position x="10" y="10"/>
+          <connectionPointOut><relPosition x="40" y="10"/></connectionPointOut><expression>go</expression></inVariable>
+        <block localId="2" typeName="FB_Count" instanceName="fbD" height="60" width="60"><position x="100" y="10"/>
+          <inputVariables>
+            <variable formalParameter="bIn"><connectionPointIn><relPosition x="0" y="30"/><connection refLocalId="1"/></connectionPointIn></variable>
+          </inputVariables>
+          <inOutVariables/>
+          <outputVariables>
+            <variable formalParameter="nCount"><connectionPointOut><relPosition x="60" y="30"/></connectionPointOut></variable>
+          </outputVariables>
+        </block>
+        <outVariable localId="3" height="20" width="40"><position x="200" y="30"/>
+          <connectionPointIn><relPosition x="0" y="10"/><connection refLocalId="2" formalParameter="nCount"/></connectionPointIn><expression>boxed</expression></outVariable>
+      </FBD></body>
+      <addData><data name="http://www.3s-software.com/plcopenxml/pouinstance" handleUnknown="discard"/></addData>
+    </pou>
+    <pou name="PRG_Sum" pouType="program">
+      <interface>
+        <externalVars />
+      </interface>
+      <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">PRG_Main.fbC(bIn := TRUE);
+PRG_Main.total.n := PRG_Main.fbC.nCount * 10;
+PRG_Main.total.busy := PRG_Main.total.n &gt; 15;</xhtml></ST></body>
+    </pou>
+  </pous></types>
+  <instances><configurations /></instances>
+</project>
+"#,
+        head("PRG_Main")
+    );
+    let fb_file = dir.path().join("fb.xml");
+    let prg_file = dir.path().join("prg.xml");
+    std::fs::write(&fb_file, fb).unwrap();
+    std::fs::write(&prg_file, prg).unwrap();
+    let (trace, stderr) = run_traced_files(
+        &[&fb_file, &prg_file],
+        2,
+        "PRG_Main.boxed,PRG_Main.fbC.nCount,PRG_Main.total.n,PRG_Main.total.busy",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,PRG_Main.boxed,PRG_Main.fbC.nCount,PRG_Main.total.n,PRG_Main.total.busy\n0,0,1,1,10,0\n1,10,2,2,20,1\n",
+        "{stderr}"
     );
 }

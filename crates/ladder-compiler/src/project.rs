@@ -75,6 +75,99 @@ pub struct Index {
     pub(crate) sfc_declarations: std::cell::OnceCell<il_frontend::st::Declarations>,
 }
 
+/// The data types and the POU elements of a project: `<types>`' and those CODESYS keeps in an
+/// application's vendor data (the applications' resources, and those of the `<instances>`
+/// configurations: CODESYS V3.5 SP17+ writes a device's application so); `single_pou`: `root` is
+/// itself the one POU.
+fn types_and_pous<'b, 'a>(
+    ctx: &mut Ctx,
+    root: &'b Element<'a>,
+    single_pou: bool,
+) -> (Vec<TypeDecl>, Vec<&'b Element<'a>>) {
+    let types_el = root.child("types");
+    let vendor_resources: Vec<&Element> = application_resources(root)
+        .into_iter()
+        .chain(instance_resources(root))
+        .collect();
+    let data_types: Vec<TypeDecl> = types_el
+        .and_then(|t| t.child("dataTypes"))
+        .into_iter()
+        .flat_map(|d| d.children_named("dataType"))
+        .chain(
+            vendor_resources
+                .iter()
+                .flat_map(|r| application_data(r, "/datatype", "dataType")),
+        )
+        .filter_map(|e| decls::data_type(ctx, e))
+        .collect();
+    // Interfaces first: bodies call each other in any order.
+    let pou_els: Vec<&Element> = types_el
+        .and_then(|t| t.child("pous"))
+        .into_iter()
+        .flat_map(|p| p.children_named("pou"))
+        .chain(single_pou.then_some(root))
+        .chain(
+            vendor_resources
+                .iter()
+                .flat_map(|r| application_data(r, "/pou", "pou")),
+        )
+        .collect();
+    (data_types, pou_els)
+}
+
+/// What the other PLCopen XML files of a project declare: their POUs' interfaces and their data
+/// types ([`interfaces`]), known while [`with_other_files`] runs.
+#[derive(Debug, Clone, Default)]
+pub struct OtherFiles {
+    /// The POUs' interfaces.
+    pub pous: Vec<PouSig>,
+    /// The data types.
+    pub types: Vec<TypeDecl>,
+}
+
+thread_local! {
+    static OTHER_FILES: std::cell::RefCell<Option<OtherFiles>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Runs `f` (the compilation of one XML file of several) with `other` (what the other files
+/// declare) known to [`read_project`].
+pub fn with_other_files<R>(other: OtherFiles, f: impl FnOnce() -> R) -> R {
+    let before = OTHER_FILES.with(|o| o.replace(Some(other)));
+    let r = f();
+    OTHER_FILES.with(|o| *o.borrow_mut() = before);
+    r
+}
+
+/// The POU interfaces and data types of one PLCopen XML file (its diagnostics are left to its own
+/// compilation); nothing for a file that is not a PLCopen project.
+pub fn interfaces(file: diagnostics::FileId, xml: &str) -> OtherFiles {
+    let arena = crate::xml::Arena::new();
+    let (Some(parsed), _) = crate::xml::parse(xml, &arena) else {
+        return OtherFiles::default();
+    };
+    let mut scratch = diagnostics::Diagnostics::new();
+    let mut ctx = Ctx::new(file, xml, &mut scratch);
+    let mut root = &parsed;
+    let mut inner = root.children_named("project");
+    if let (true, Some(project), None) = (root.name() == "projects", inner.next(), inner.next()) {
+        root = project;
+    }
+    let single_pou = root.name() == "pou" && root.attr("xmlns").is_some_and(is_plcopen_namespace);
+    if root.name() != "project" && !single_pou {
+        return OtherFiles::default();
+    }
+    let _version = version(&mut ctx, root);
+    vendor_data(&mut ctx, root);
+    ctx.constants = decls::collect_constants(root, true, &|_| None);
+    let (types, pou_els) = types_and_pous(&mut ctx, root, single_pou);
+    let pous = pou_els
+        .iter()
+        .filter_map(|p| pou_header(&mut ctx, p))
+        .map(|h| signature(&h))
+        .collect();
+    OtherFiles { pous, types }
+}
+
 /// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a
 /// root that is not `<project>` is E3002 and gives an empty unit.
 pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
@@ -109,39 +202,8 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     // integer constants for array bounds: every constant global list of the file, vendor GVLs too
     ctx.constants = decls::collect_constants(root, true, &|_| None);
 
-    let types_el = root.child("types");
     let apps = application_resources(root);
-    // resources whose vendor data may hold data types and POUs: the applications', and those of
-    // the `<instances>` configurations (CODESYS V3.5 SP17+ writes a device's application so)
-    let vendor_resources: Vec<&Element> = apps
-        .iter()
-        .copied()
-        .chain(instance_resources(root))
-        .collect();
-    let mut data_types: Vec<TypeDecl> = types_el
-        .and_then(|t| t.child("dataTypes"))
-        .into_iter()
-        .flat_map(|d| d.children_named("dataType"))
-        .chain(
-            vendor_resources
-                .iter()
-                .flat_map(|r| application_data(r, "/datatype", "dataType")),
-        )
-        .filter_map(|e| decls::data_type(ctx, e))
-        .collect();
-
-    // Interfaces first: bodies call each other in any order.
-    let pou_els: Vec<&Element> = types_el
-        .and_then(|t| t.child("pous"))
-        .into_iter()
-        .flat_map(|p| p.children_named("pou"))
-        .chain(single_pou.then_some(root))
-        .chain(
-            vendor_resources
-                .iter()
-                .flat_map(|r| application_data(r, "/pou", "pou")),
-        )
-        .collect();
+    let (mut data_types, pou_els) = types_and_pous(ctx, root, single_pou);
     let mut headers = Vec::new();
     let mut index = Index::default();
     for d in &data_types {
@@ -199,6 +261,21 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
         index.types.insert(d.name.key(), d.clone());
         data_types.push(d);
     }
+    // the POUs and data types of the other XML files given with this one (CODESYS exports one
+    // object per file): known to this file's calls and bodies, compiled with their own file
+    OTHER_FILES.with(|o| {
+        if let Some(other) = o.borrow().as_ref() {
+            for sig in &other.pous {
+                index
+                    .pous
+                    .entry(sig.name.to_ascii_uppercase())
+                    .or_insert_with(|| sig.clone());
+            }
+            for d in &other.types {
+                index.types.entry(d.name.key()).or_insert_with(|| d.clone());
+            }
+        }
+    });
     let mut configs: Vec<Configuration> = root
         .child("instances")
         .and_then(|i| i.child("configurations"))

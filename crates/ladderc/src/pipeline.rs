@@ -318,6 +318,13 @@ impl Session {
             }
         }
         let programs_before = il_frontend::st::qualifiers::set_project_programs(programs);
+        // several PLCopen XML files (CODESYS exports one object per file): compiled once all are
+        // read, each knowing the POUs and data types of the others
+        let xml_inputs = paths
+            .iter()
+            .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")))
+            .count();
+        let mut deferred_xml: Vec<(usize, diagnostics::FileId, Option<PathBuf>)> = Vec::new();
         for p in &paths {
             // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals
             let (resolved, beremiz_dir) = crate::beremiz::resolve(self, p);
@@ -492,7 +499,10 @@ impl Session {
                 (Some(text), _) | (None, Some(text)) => (Lang::St, text.as_str()),
                 (None, None) => (file_lang, src.as_str()),
             };
-            if file_lang == Lang::Xml {
+            if file_lang == Lang::Xml && xml_inputs > 1 {
+                deferred_xml.push((units.len(), file, beremiz_dir.clone()));
+                units.push(il_frontend::ast::CompilationUnit::default());
+            } else if file_lang == Lang::Xml {
                 let (mut unit, entries) =
                     ladder_compiler::compile_xml_with_var_config(file, src, &mut self.diags);
                 if let Some(dir) = &beremiz_dir {
@@ -559,6 +569,7 @@ impl Session {
                 var_config.extend(entries);
             }
         }
+        self.compile_xml_files(deferred_xml, &mut units, &mut var_config);
         // the names every file declares, and the global lists named after their files (a text
         // file is a list when it holds nothing else, as `text_lists::name_text_lists` names it)
         let is_list = |k: &usize| {
@@ -701,6 +712,39 @@ impl Session {
     /// resolves and a cycle stops. The last parse of each file is kept, with its diagnostics. A file
     /// whose qualifier named no library (E1032) is parsed again with `names`, those the project's
     /// files declare, known: `GVL.fbTimer(...)` with the list `GVL` in another file is no library.
+    /// Compiles the PLCopen XML files read (`(unit index, file, Beremiz folder)`), each with the POU
+    /// interfaces and data types of the others known ([`ladder_compiler::project::with_other_files`]).
+    fn compile_xml_files(
+        &mut self,
+        files: Vec<(usize, diagnostics::FileId, Option<PathBuf>)>,
+        units: &mut [il_frontend::ast::CompilationUnit],
+        var_config: &mut Vec<il_frontend::st::file::ConfigEntry>,
+    ) {
+        let interfaces: Vec<ladder_compiler::project::OtherFiles> = files
+            .iter()
+            .map(|(_, f, _)| ladder_compiler::project::interfaces(*f, &self.map.get(*f).text))
+            .collect();
+        for (i, (k, file, dir)) in files.into_iter().enumerate() {
+            let mut other = ladder_compiler::project::OtherFiles::default();
+            for (_, o) in interfaces.iter().enumerate().filter(|(j, _)| *j != i) {
+                other.pous.extend(o.pous.iter().cloned());
+                other.types.extend(o.types.iter().cloned());
+            }
+            let src = &self.map.get(file).text;
+            let diags = &mut self.diags;
+            let (mut unit, entries) = ladder_compiler::project::with_other_files(other, || {
+                ladder_compiler::compile_xml_with_var_config(file, src, diags)
+            });
+            if let Some(dir) = &dir {
+                crate::beremiz::add_confnodes(self, dir, &mut unit);
+            }
+            if let Some(slot) = units.get_mut(k) {
+                *slot = unit;
+            }
+            var_config.extend(entries);
+        }
+    }
+
     fn reparse_with_other_files_constants(
         &mut self,
         mut waiting: Vec<WaitingFile>,
