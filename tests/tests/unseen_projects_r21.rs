@@ -40,7 +40,12 @@
 //!   `__3_EventLogger_FB_TcAlarm`), and W1003's hint for an ST function is ST;
 //! - several PLCopen XML files given together (CODESYS exports one object per file): a program
 //!   in one calls a function block of another, in ST and as an FBD box, and uses its structure
-//!   type (before: E3009 "type `FB_Count` is not defined in this project").
+//!   type (before: E3009 "type `FB_Count` is not defined in this project");
+//! - Tc2_MC2's `MC_HomingMode.MC_Direct` (older Tc2_MC2 versions' name of the mode that sets the
+//!   position without a movement; ggekchyan's 3D-Scanner; before: E1001 "undeclared name
+//!   `MC_HomingMode`");
+//! - edition 3's `VAR PUBLIC` (W0304, the word ignored) and `CLASS ... END_CLASS` (one E1076 per
+//!   class; simatic-ax; before: W0001 "instructions outside any POU" and E0011s with IL advice).
 
 mod common;
 use common::{ladderc, rejected_heads, run_text, run_traced_files};
@@ -721,5 +726,105 @@ PRG_Main.total.busy := PRG_Main.total.n &gt; 15;</xhtml></ST></body>
         trace,
         "cycle,time_ms,PRG_Main.boxed,PRG_Main.fbC.nCount,PRG_Main.total.n,PRG_Main.total.busy\n0,0,1,1,10,0\n1,10,2,2,20,1\n",
         "{stderr}"
+    );
+}
+
+/// `HomingMode := MC_HomingMode.MC_Direct` of the Tc2_MC2 MC_Home: the position is set to
+/// `Position` on the spot, the axis homed, Done in the next cycle.
+#[test]
+fn tc2_mc_direct_sets_the_position_without_a_movement() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("home.axes.json"),
+        r#"{ "cycle_ms": 10, "axes": [ { "name": "X", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0, "link": "MAIN.ax" } ] }"#,
+    )
+    .unwrap();
+    let f = dir.path().join("home.st");
+    std::fs::write(
+        &f,
+        "PROGRAM MAIN
+VAR
+    ax : AXIS_REF;
+    pw : MC_Power;
+    hm : MC_Home;
+    go : BOOL;
+    done : BOOL;
+    homed : BOOL;
+END_VAR
+pw(Axis := ax, Enable := TRUE, Enable_Positive := TRUE, Enable_Negative := TRUE);
+go := pw.Status;
+hm(Axis := ax, Execute := go, Position := 5.0, HomingMode := MC_HomingMode.MC_Direct);
+done := hm.Done;
+homed := ax.Status.Homed;
+END_PROGRAM
+",
+    )
+    .unwrap();
+    let (trace, _) = run_traced_files(
+        &[&f],
+        3,
+        "MAIN.done,MAIN.homed,axis.X.position,MAIN.hm.Error",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,MAIN.done,MAIN.homed,axis.X.position,MAIN.hm.Error\n0,0,0,0,5,0\n1,10,1,1,5,0\n2,20,1,1,5,0\n"
+    );
+}
+
+/// `VAR PUBLIC` in a function block is its VAR (W0304 at the word; a variable named `public`
+/// stays one), and each edition-3 CLASS is one E1076 at its keyword and name.
+#[test]
+fn var_public_is_read_and_a_class_is_one_error() {
+    let src = "FUNCTION_BLOCK fb
+VAR PUBLIC
+  x : BOOL;
+END_VAR
+VAR
+  public : INT;
+END_VAR
+  x := NOT x;
+  public := public + 1;
+END_FUNCTION_BLOCK
+PROGRAM p
+VAR f : fb; END_VAR
+  f();
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("public.st", src, 2, "p.f.x,p.f.public");
+    assert_eq!(trace, "cycle,time_ms,p.f.x,p.f.public\n0,0,1,1\n1,10,0,2\n");
+    assert!(
+        stderr.contains(
+            "public.st:2:5: warning[W0304]: `VAR PUBLIC`: the access specifier is ignored"
+        ),
+        "{stderr}"
+    );
+    let class_src = "CLASS Valve
+  VAR PUBLIC
+    bIsOpen : BOOL;
+  END_VAR
+  METHOD Open
+    bIsOpen := TRUE;
+  END_METHOD
+END_CLASS
+
+CLASS OutputValve EXTENDS Valve
+  VAR PUBLIC
+    drain : BOOL;
+  END_VAR
+END_CLASS
+
+PROGRAM p
+VAR
+  n : INT;
+END_VAR
+  n := n + 1;
+END_PROGRAM
+";
+    assert_eq!(
+        rejected_heads("class.st", class_src),
+        [
+            "class.st:1:1: error[E1076]: CLASS `Valve` (IEC 61131-3 ed. 3) is not compiled",
+            "class.st:10:1: error[E1076]: CLASS `OutputValve` (IEC 61131-3 ed. 3) is not compiled",
+        ]
     );
 }

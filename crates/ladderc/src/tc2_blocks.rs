@@ -93,14 +93,17 @@ END_TYPE
 /// MC_Jog in ST (the module header says what it does).
 const JOG: &str = include_str!("tc2_blocks/MC_Jog.st");
 
-/// Infosys, Tc2_MC2 > Data types > MC_HomingMode.
+/// Infosys, Tc2_MC2 > Data types > MC_HomingMode; `MC_Direct`, the name older Tc2_MC2 versions
+/// give the mode that sets the position to `Position` without a movement, is MC_AbsoluteHoming's
+/// number.
 const HOMING_MODE: &str = "TYPE MC_HomingMode :
 (
     MC_DefaultHoming,
     MC_AbsoluteHoming,
     MC_RelativeHoming,
     MC_ForceCalibration,
-    MC_ResetCalibration
+    MC_ResetCalibration,
+    MC_Direct := 1
 );
 END_TYPE
 ";
@@ -209,6 +212,7 @@ fn reads_calibration(units: &[CompilationUnit]) -> bool {
         "MC_RELATIVEHOMING",
         "MC_FORCECALIBRATION",
         "MC_RESETCALIBRATION",
+        "MC_DIRECT",
     ];
     fn var(v: &VarRef) -> bool {
         NAMES.contains(&v.base.key().as_str())
@@ -260,6 +264,48 @@ fn reads_calibration(units: &[CompilationUnit]) -> bool {
         })
 }
 
+/// The operands `MC_HomingMode.<value>` of `body` (CODESYS's and TwinCAT's way to name an
+/// enumerated value) made the enumerated value `MC_HomingMode#<value>`.
+fn qualified_modes(body: &mut [IlStmt]) {
+    fn operand(o: &mut Operand) {
+        let Operand::Var(v) = o else { return };
+        let [Accessor::Field(value)] = &v.accessors[..] else {
+            return;
+        };
+        if v.base.is("MC_HomingMode") {
+            *o = Operand::enum_value(v.base.clone(), value.clone(), v.span);
+        }
+    }
+    fn args(a: &mut CallArgs) {
+        match a {
+            CallArgs::Formal(list) => list.iter_mut().for_each(|a| operand(&mut a.value)),
+            CallArgs::NonFormal(ops) => ops.iter_mut().for_each(operand),
+            CallArgs::None => {}
+        }
+    }
+    for s in body {
+        let IlStmt::Instr(i) = s else { continue };
+        match &mut i.kind {
+            InstrKind::Simple {
+                operand: Some(o), ..
+            } => operand(o),
+            InstrKind::Deferred {
+                operand: o,
+                body: b,
+                ..
+            } => {
+                if let Some(o) = o {
+                    operand(o);
+                }
+                qualified_modes(b);
+            }
+            InstrKind::Call { args: a, .. } => args(a),
+            InstrKind::FunctionCall { args: a, .. } => args(a),
+            _ => {}
+        }
+    }
+}
+
 /// `MC_Home` (or `Tc2_MC2.MC_Home`) as a type, also as an array's element.
 fn home_type(t: &mut TypeRef) -> Option<&mut Ident> {
     match t {
@@ -300,6 +346,14 @@ fn add_home(
     let mut text = String::new();
     if !declared(units, "MC_HomingMode") {
         text.push_str(HOMING_MODE);
+        // `MC_HomingMode.MC_Direct`, read as a variable before the type was added: its value
+        for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+            match item {
+                LibraryElement::Pou(p) => qualified_modes(&mut p.body),
+                LibraryElement::Action(a) => qualified_modes(&mut a.body),
+                _ => {}
+            }
+        }
     }
     if retyped {
         text.push_str(HOME);

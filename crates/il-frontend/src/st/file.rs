@@ -958,7 +958,7 @@ pub fn parse_text(
         None => src,
     };
     let mut references = RefTypes::default();
-    let (uninstanced, unextended, unstatic): (String, String, String);
+    let (uninstanced, unextended, unstatic, unclassed): (String, String, String, String);
     let mut stat_at = Vec::new();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
@@ -1006,6 +1006,15 @@ pub fn parse_text(
                 unimported = t;
                 (toks, problems) = lex(&unimported);
                 unimported.as_str()
+            }
+            None => src,
+        };
+        // `CLASS ... END_CLASS` (ed. 3): one E1076 each, blanked (`using`)
+        let src = match super::using::classes(file, src, &toks, diags) {
+            Some(t) => {
+                unclassed = t;
+                (toks, problems) = lex(&unclassed);
+                unclassed.as_str()
             }
             None => src,
         };
@@ -1080,6 +1089,18 @@ pub fn parse_text(
                 word(src, &toks[k + 2]).to_string(),
             )
         })
+        .collect();
+    // `VAR PUBLIC` (IEC 61131-3 ed. 3 access specifiers of a block's variables, Siemens AX): the
+    // word changes nothing in one project (a variable named so, `VAR public : BOOL`, stays)
+    let var_specifiers: Vec<std::ops::Range<usize>> = (0..toks.len().saturating_sub(2))
+        .filter(|&k| {
+            is_word(src, &toks[k], "VAR")
+                && ["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
+                    .iter()
+                    .any(|m| is_word(src, &toks[k + 1], m))
+                && !matches!(toks[k + 2].tok, Tok::Colon | Tok::Comma)
+        })
+        .map(|k| toks[k + 1].range.clone())
         .collect();
     drop(toks);
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();
@@ -1193,6 +1214,19 @@ pub fn parse_text(
             );
             blank(&mut text, r);
         }
+    }
+    for r in &var_specifiers {
+        let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
+        diags.push(
+            Diagnostic::warning(
+                code::W0304,
+                format!("`VAR {m}`: the access specifier is ignored"),
+            )
+            .at(Span::new(file, r.start, r.end))
+            .with_primary_label("ignored")
+            .with_hint("ladderc compiles one project without namespaces: the variables of a block are read as its VAR (reachable as `inst.x`, W1412); remove the word to silence this"),
+        );
+        blank(&mut text, r.clone());
     }
     for p in &pous {
         if let Some(r) = &p.modifier {

@@ -153,3 +153,47 @@ pub(super) fn typed_tasks(
     }
     out
 }
+
+/// `CLASS Name ... END_CLASS` (IEC 61131-3 ed. 3 classes, SIMATIC AX), which ladderc does not
+/// compile: one E1076 at the keyword and the class's name, the class blanked up to its `END_CLASS`
+/// (so its declarations and methods are not read as instructions outside any POU); a use of the
+/// class as a type is then an unknown type where it is written. `None` when there is none.
+pub(super) fn classes(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> Option<String> {
+    let mut out: Option<String> = None;
+    let mut k = 0;
+    while k + 1 < toks.len() {
+        // at the start of the text or after a `;` or an `END_...` keyword
+        let at_start = k == 0
+            || toks[k - 1].tok == Tok::Semi
+            || word(src, &toks[k - 1])
+                .to_ascii_uppercase()
+                .starts_with("END_");
+        if !(at_start && is_word(src, &toks[k], "CLASS") && toks[k + 1].tok == Tok::Ident) {
+            k += 1;
+            continue;
+        }
+        let Some(end) = (k + 2..toks.len()).find(|&j| is_word(src, &toks[j], "END_CLASS")) else {
+            k += 1;
+            continue;
+        };
+        let name = word(src, &toks[k + 1]);
+        diags.push(
+            Diagnostic::error(
+                code::E1076,
+                format!("CLASS `{name}` (IEC 61131-3 ed. 3) is not compiled"),
+            )
+            .at(Span::new(file, toks[k].range.start, toks[k + 1].range.end))
+            .with_primary_label("a class")
+            .with_hint("declare it as a FUNCTION_BLOCK (EXTENDS, IMPLEMENTS, its METHODs and variables as they are): ladderc compiles function blocks with methods and inheritance"),
+        );
+        let text = out.get_or_insert_with(|| src.to_string());
+        super::file::blank(text, toks[k].range.start..toks[end].range.end);
+        k = end + 1;
+    }
+    out
+}
