@@ -45,10 +45,18 @@
 //!   position without a movement; ggekchyan's 3D-Scanner; before: E1001 "undeclared name
 //!   `MC_HomingMode`");
 //! - edition 3's `VAR PUBLIC` (W0304, the word ignored) and `CLASS ... END_CLASS` (one E1076 per
-//!   class; simatic-ax; before: W0001 "instructions outside any POU" and E0011s with IL advice).
+//!   class; simatic-ax; before: W0001 "instructions outside any POU" and E0011s with IL advice),
+//!   also `VAR RETAIN PUBLIC`, `VAR CONSTANT PRIVATE`;
+//! - a PLCopen block's input left out of a call keeps the value the last call gave it, and
+//!   `rst.Execute` reads it, in both parameter-passing methods (before: FALSE, so MC_Reset's Done
+//!   fell in the next call without Execute; the traced Execute was always 0);
+//! - `RETURN (cond);` and `RETURN(b := e);` (CODESYS conditional return, fisothemes'
+//!   FsControllerToolbox; before: E0104 "missing `;`");
+//! - `Foo;` of a name nothing declares is E1001 (before: only W1431, the statement silently
+//!   dropped; mgmike1011's B&R action calls).
 
 mod common;
-use common::{ladderc, rejected_heads, run_text, run_traced_files};
+use common::{column, ladderc, rejected_heads, run_text, run_traced_files};
 
 /// Operations on a subrange value take its base type: the literals beside it are not checked
 /// against the range, the results are exact, and a result stored back into the subrange that
@@ -825,6 +833,143 @@ END_PROGRAM
         [
             "class.st:1:1: error[E1076]: CLASS `Valve` (IEC 61131-3 ed. 3) is not compiled",
             "class.st:10:1: error[E1076]: CLASS `OutputValve` (IEC 61131-3 ed. 3) is not compiled",
+        ]
+    );
+}
+
+/// `VAR RETAIN PUBLIC` and `VAR CONSTANT PRIVATE`: the specifier ignored (W0304), the blocks read.
+#[test]
+fn an_access_specifier_after_the_blocks_qualifiers_is_ignored() {
+    let src = "FUNCTION_BLOCK fb
+VAR RETAIN PUBLIC
+  n : INT;
+END_VAR
+VAR CONSTANT PRIVATE
+  step : INT := 5;
+END_VAR
+  n := n + step;
+END_FUNCTION_BLOCK
+PROGRAM p
+VAR f : fb; END_VAR
+  f();
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("retain_public.st", src, 2, "p.f.n");
+    assert_eq!(trace, "cycle,time_ms,p.f.n\n0,0,5\n1,10,10\n");
+    assert!(
+        stderr.contains("retain_public.st:2:12: warning[W0304]: `VAR PUBLIC`"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("retain_public.st:5:14: warning[W0304]: `VAR PRIVATE`"),
+        "{stderr}"
+    );
+}
+
+/// MC_Reset called with `Execute := TRUE` once and then without Execute: Execute stays TRUE in
+/// the instance, so Done stays TRUE (PLCopen: Done is kept while Execute is TRUE), with the IL
+/// method and with the template method.
+#[test]
+fn an_input_left_out_of_a_block_call_keeps_its_last_value() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("keep.axes.json"),
+        r#"{ "cycle_ms": 10, "axes": [ { "name": "X", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0, "link": "MAIN.ax" } ] }"#,
+    )
+    .unwrap();
+    let f = dir.path().join("keep.st");
+    std::fs::write(
+        &f,
+        "PROGRAM MAIN
+VAR
+    ax : AXIS_REF;
+    rst : MC_Reset;
+    n : INT;
+END_VAR
+n := n + 1;
+IF n = 3 THEN rst(Axis := ax, Execute := TRUE); ELSE rst(Axis := ax); END_IF
+END_PROGRAM
+",
+    )
+    .unwrap();
+    let expected = "cycle,time_ms,MAIN.n,MAIN.rst.Execute,MAIN.rst.Done\n0,0,1,0,0\n1,10,2,0,0\n2,20,3,1,1\n3,30,4,1,1\n4,40,5,1,1\n";
+    for strategy in ["il", "template"] {
+        let out = ladderc()
+            .args(["--message-format", "short", "run"])
+            .arg(&f)
+            .args([
+                "--strategy",
+                strategy,
+                "--cycles",
+                "5",
+                "--sanitize",
+                "--trace",
+                "-",
+            ])
+            .args(["--watch", "MAIN.n,MAIN.rst.Execute,MAIN.rst.Done"])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{strategy}: {stderr}");
+        assert_eq!(String::from_utf8_lossy(&out.stdout), expected, "{strategy}");
+    }
+}
+
+/// `RETURN (cond);` leaves the block when `cond` holds; `RETURN(b := e);` assigns `b` first and
+/// tests it.
+#[test]
+fn a_conditional_return_leaves_when_its_condition_holds() {
+    let src = "FUNCTION_BLOCK FB_R
+VAR_INPUT go : BOOL; END_VAR
+VAR_OUTPUT n : INT; m : INT; END_VAR
+VAR bInit : BOOL := TRUE; t : INT; END_VAR
+IF bInit THEN
+  t := t + 1;
+  RETURN(bInit := t <= 2);
+END_IF
+RETURN (NOT go);
+n := n + 1;
+RETURN(n > 3);
+m := m + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR f : FB_R; g : BOOL; END_VAR
+f(go := g);
+g := NOT g;
+END_PROGRAM
+";
+    let (trace, _) = run_text("ret.st", src, 10, "Main.f.t,Main.f.n,Main.f.m");
+    assert_eq!(
+        column(&trace, "Main.f.t"),
+        [1.0, 2.0, 3.0, 3.0, 3.0, 3.0, 3.0, 3.0, 3.0, 3.0]
+    );
+    assert_eq!(
+        column(&trace, "Main.f.n"),
+        [0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0]
+    );
+    assert_eq!(
+        column(&trace, "Main.f.m"),
+        [0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 3.0]
+    );
+}
+
+/// A name alone as a statement: a declared one is W1431 and does nothing; one nothing declares
+/// is E1001.
+#[test]
+fn a_name_alone_must_be_declared() {
+    let src = "PROGRAM Main\nVAR b : BOOL; n : INT; END_VAR\nb;\nFoo;\nn := n + 1;\nEND_PROGRAM\n";
+    let (code, lines) = common::check_text("named.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split(" (hint").next().unwrap())
+        .collect();
+    assert_eq!(
+        heads,
+        [
+            "named.st:3:1: warning[W1431]: `b;` has no effect: it names a value and does nothing with it",
+            "named.st:4:1: error[E1001]: undeclared name `Foo`",
+            "named.st:4:1: warning[W1431]: `Foo;` has no effect: it names a value and does nothing with it",
         ]
     );
 }

@@ -184,6 +184,10 @@ pub struct Ctx<'s> {
     pub sized_globals: HashMap<String, TypeRef>,
 }
 
+/// An enumerated value as written: its name and, when given, its value's expression with the
+/// expression's start and end offsets (see [`Ctx::enum_values`]).
+pub type RawEnumValue = (Ident, Option<(BoundExpr, usize, usize)>);
+
 /// An integer constant expression in an array bound or a string length, as parsed (see
 /// [`Ctx::bound`]).
 #[derive(Debug)]
@@ -1152,10 +1156,7 @@ impl<'s> Ctx<'s> {
     /// as a constant expression is evaluated with the values named before it known by their names
     /// (`White := Red OR Green OR Blue`, IEC 61131-3 ed. 3, Table 11), and with the constants
     /// declared before; one that has no value is E0022 (and numbered as if it were left out).
-    pub fn enum_values(
-        &mut self,
-        raw: Vec<(Ident, Option<(BoundExpr, usize, usize)>)>,
-    ) -> Vec<EnumValue> {
+    pub fn enum_values(&mut self, raw: Vec<RawEnumValue>) -> Vec<EnumValue> {
         let mut values: Vec<EnumValue> = Vec::with_capacity(raw.len());
         // the constants the values shadow while the list is read, restored after it
         let mut shadowed: Vec<(String, Option<ConstNum>)> = Vec::new();

@@ -200,12 +200,11 @@ fn line_comment_open(line: &[u8]) -> bool {
             Some(_) if c == b'$' => i += 1, // an escape: `$'` stays in the literal
             Some(q) if c == q => quote = None,
             Some(_) => {}
-            None if block => {
-                if c == b'*' && next == Some(b')') {
-                    block = false;
-                    i += 1;
-                }
+            None if block && c == b'*' && next == Some(b')') => {
+                block = false;
+                i += 1;
             }
+            None if block => {}
             None if c == b'(' && next == Some(b'*') => {
                 block = true;
                 i += 1;

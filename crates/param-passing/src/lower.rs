@@ -207,6 +207,27 @@ fn field(inst: &VarRef, name: &str) -> Operand {
     Operand::Var(r)
 }
 
+/// The scalar inputs a call binds: each is stored into the instance's own field with the call, so
+/// that an input the next call leaves out keeps this value (IEC 61131-3, 6.6.3.4: `rst(Axis := ax,
+/// Execute := TRUE);` then `rst(Axis := ax);` keeps Execute TRUE), and `rst.Execute` reads it.
+fn bound_inputs<'t>(t: &'t Template, args: &'t CallArgs) -> impl Iterator<Item = &'t Param> {
+    let list: &[FormalArg] = match args {
+        CallArgs::Formal(list) => list,
+        _ => &[],
+    };
+    let names: Vec<&Ident> = list
+        .iter()
+        .filter(|a| a.dir == ArgDir::Input)
+        .map(|a| &a.name)
+        .collect();
+    t.params.iter().filter(move |p| {
+        p.direction == Direction::Input
+            && p.array.is_none()
+            && p.class != TypeClass::Struct
+            && names.iter().any(|n| n.is(&p.name))
+    })
+}
+
 /// Element `index` of an array operand (a variable; anything else is returned unchanged).
 fn element(array: &Operand, index: i64) -> Operand {
     match array {
@@ -832,6 +853,12 @@ impl PouLowering<'_> {
         span: Span,
         out: &mut Vec<IlStmt>,
     ) {
+        // 0. the bound inputs into the instance (kept for the next call that leaves them out)
+        for p in bound_inputs(t, args) {
+            let value = Self::input_source(p, instance, args);
+            out.push(simple(Op::Ld, false, Some(value), span));
+            out.push(simple(Op::St, false, Some(field(instance, &p.name)), span));
+        }
         // 1. transfer into TM: inputs, then what the library reads back (previous outputs, state); an
         //    array element by element
         for p in t.inputs().chain(t.carried()) {
@@ -923,6 +950,16 @@ impl PouLowering<'_> {
                     local: local_of(k),
                     class: p.class,
                     source,
+                });
+            }
+            // a bound input back into the instance after the call (kept for the next call that
+            // leaves it out), inside the one function
+            if bound_inputs(t, args).any(|b| std::ptr::eq(b, p)) {
+                tail.push(Feedback {
+                    target: field(instance, &p.name),
+                    local: local_of(0),
+                    class: p.class,
+                    negated: false,
                 });
             }
             if matches!(p.direction, Direction::Output | Direction::State) {

@@ -133,14 +133,19 @@ fn template_method_emits_exactly_one_func_per_call() {
         f.body
     );
     assert!(f.body.contains("St0_1 = (uint64_t)FuncNum;"));
-    // The head reads outputs and state back from the instance; the tail writes them (and `=>` targets).
+    // The head reads outputs and state back from the instance; the tail writes the bound inputs
+    // into the instance (a call that leaves one out keeps it), then outputs and state (and `=>`
+    // targets).
     let heads: Vec<&str> = f.head.iter().map(|h| h.local.as_str()).collect();
     assert_eq!(
         heads,
         ["Ax_1", "Ex_1", "Pos_1", "BM_1", "Dn_1", "EID_1", "St0_1"]
     );
     let tails: Vec<&str> = f.tail.iter().map(|t| t.local.as_str()).collect();
-    assert_eq!(tails, ["Dn_1", "Dn_1", "EID_1", "EID_1", "St0_1"]);
+    assert_eq!(
+        tails,
+        ["Ex_1", "Pos_1", "Dn_1", "Dn_1", "EID_1", "EID_1", "St0_1"]
+    );
     assert_eq!(lowered.reports[0].il_instructions, 1);
 }
 

@@ -101,6 +101,9 @@ pub enum StmtKind {
     Label(Ident),
     /// `JMP name;` (CODESYS and TwinCAT ST): go on at the label `name:` of the same body.
     Jump(Ident),
+    /// `x;`, a name alone (CODESYS, TwinCAT: no effect, W1431 from the parser): does nothing, but
+    /// its name must be declared (E1001 otherwise).
+    Named(Place),
 }
 
 /// `IF`/`ELSIF` condition with its statements.

@@ -1092,15 +1092,26 @@ pub fn parse_text(
         .collect();
     // `VAR PUBLIC` (IEC 61131-3 ed. 3 access specifiers of a block's variables, Siemens AX): the
     // word changes nothing in one project (a variable named so, `VAR public : BOOL`, stays)
-    let var_specifiers: Vec<std::ops::Range<usize>> = (0..toks.len().saturating_sub(2))
-        .filter(|&k| {
-            is_word(src, &toks[k], "VAR")
-                && ["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
+    // (also after the block's qualifiers: `VAR RETAIN PUBLIC`, `VAR CONSTANT PRIVATE`)
+    let var_specifiers: Vec<std::ops::Range<usize>> = (0..toks.len())
+        .filter(|&k| is_word(src, &toks[k], "VAR"))
+        .filter_map(|k| {
+            let mut j = k + 1;
+            while toks.get(j).is_some_and(|t| {
+                ["RETAIN", "NON_RETAIN", "CONSTANT", "PERSISTENT"]
                     .iter()
-                    .any(|m| is_word(src, &toks[k + 1], m))
-                && !matches!(toks[k + 2].tok, Tok::Colon | Tok::Comma)
+                    .any(|q| is_word(src, t, q))
+            }) {
+                j += 1;
+            }
+            let spec = toks.get(j)?;
+            let after = toks.get(j + 1)?;
+            (["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
+                .iter()
+                .any(|m| is_word(src, spec, m))
+                && !matches!(after.tok, Tok::Colon | Tok::Comma))
+            .then(|| spec.range.clone())
         })
-        .map(|k| toks[k + 1].range.clone())
         .collect();
     drop(toks);
     let st_bodies: Vec<&PouText> = pous.iter().filter(|p| p.lang == Lang::St).collect();

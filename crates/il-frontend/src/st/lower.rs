@@ -824,6 +824,30 @@ impl<'d> PouLowering<'d> {
                 self.method_call(&sig, args, span, out, diags);
             }
             StmtKind::Empty => {}
+            // `x;` (W1431): nothing to run, but a name nothing declares is an error
+            StmtKind::Named(p) => {
+                if let PlaceBase::Name(n) = &p.base {
+                    let key = n.key();
+                    let known = self.env().var_type(n).is_some()
+                        || self.decls.global_lists.contains_key(&key)
+                        || self.decls.pou(&n.name).is_some()
+                        || self.decls.types.contains_key(&key)
+                        || self.actions.contains_key(&key)
+                        || self.il_actions.contains_key(&key)
+                        || self.env().place_type(p).is_some();
+                    if !known {
+                        diags.push(
+                            Diagnostic::error(code::E1001, format!("undeclared name `{}`", n.name))
+                                .at(n.span)
+                                .with_primary_label("not declared")
+                                .with_hint(format!(
+                                    "declare `{}` in a VAR block (or VAR_EXTERNAL for a global); a name alone as a statement does nothing",
+                                    n.name
+                                )),
+                        );
+                    }
+                }
+            }
             StmtKind::Assign { target, value } if is_ref_assign(value) => {
                 self.poisoned = false;
                 let mut code = Vec::new();

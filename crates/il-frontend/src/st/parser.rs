@@ -616,7 +616,15 @@ impl<'s, 'd> Parser<'s, 'd> {
             }
             Tok::Kw(Kw::Return) => {
                 self.bump();
-                Some(StmtKind::Return)
+                if self.at(&Tok::LParen) {
+                    // `RETURN (xIsDone);` (CODESYS, TwinCAT: a conditional return), also with an
+                    // ExST assignment, `RETURN(bInit := fT <= 0);`: `IF cond THEN RETURN; END_IF`
+                    let cond = self.expr();
+                    let span = self.span(start, self.prev_end());
+                    return_if(cond, span)
+                } else {
+                    Some(StmtKind::Return)
+                }
             }
             Tok::Ident if self.try_word() == Some("__TRY") => self.try_stmt(),
             // `FUNCTION Add : INT ... END_FUNCTION` written inside another POU's body (some
@@ -854,7 +862,7 @@ impl<'s, 'd> Parser<'s, 'd> {
                     .with_primary_label("no assignment, no call")
                     .with_hint("assign it (`y := x;`), call it (`inst();`), or delete the statement (CODESYS and TwinCAT compile it with the same message)"),
                 );
-                Some(StmtKind::Empty)
+                Some(StmtKind::Named(target))
             }
             _ => {
                 let found = self.describe_current();
@@ -1975,4 +1983,19 @@ impl<'s, 'd> Parser<'s, 'd> {
 /// stand before the `)`.
 fn formal_so_far(args: &[Arg]) -> bool {
     !args.is_empty() && args.iter().all(|a| a.name.is_some())
+}
+
+/// `RETURN (cond);`: `IF cond THEN RETURN; END_IF` spanning `span`.
+fn return_if(cond: Expr, span: Span) -> Option<StmtKind> {
+    Some(StmtKind::If {
+        branches: vec![CondBranch {
+            cond,
+            body: vec![Stmt {
+                kind: StmtKind::Return,
+                span,
+            }],
+            span,
+        }],
+        else_body: None,
+    })
 }
