@@ -53,10 +53,12 @@
 //! - `RETURN (cond);` and `RETURN(b := e);` (CODESYS conditional return, fisothemes'
 //!   FsControllerToolbox; before: E0104 "missing `;`");
 //! - `Foo;` of a name nothing declares is E1001 (before: only W1431, the statement silently
-//!   dropped; mgmike1011's B&R action calls).
+//!   dropped; mgmike1011's B&R action calls);
+//! - corpus: efranceschetti/festo-codesys-mcp's two CODESYS V3.5 SP21 exports (MIT), a program and
+//!   the state-machine block it calls, one object per file: given together, they run.
 
 mod common;
-use common::{column, ladderc, rejected_heads, run_text, run_traced_files};
+use common::{column, ladderc, rejected_heads, run_stimulated_files, run_text, run_traced_files};
 
 /// Operations on a subrange value take its base type: the literals beside it are not checked
 /// against the range, the results are exact, and a result stored back into the subrange that
@@ -971,5 +973,40 @@ fn a_name_alone_must_be_declared() {
             "named.st:4:1: error[E1001]: undeclared name `Foo`",
             "named.st:4:1: warning[W1431]: `Foo;` has no effect: it names a value and does nothing with it",
         ]
+    );
+}
+
+/// efranceschetti/festo-codesys-mcp (MIT, `tests/corpus/efranceschetti_festo-codesys-mcp_*.xml`): CODESYS's export of PRG_Main and, in another
+/// file, of the FB_StateMachine it calls. Given together they run: the start button (cycle 2)
+/// moves the machine to WORKING (state 10, busy) and, the TON watchdog's 5 s later, to ERROR
+/// (state 99, error 100, not busy).
+#[test]
+fn festo_exports_of_one_object_each_run_together() {
+    let files = ["prg-cyclic", "fb-state-machine"].map(|f| {
+        common::repo_root().join(format!(
+            "tests/corpus/efranceschetti_festo-codesys-mcp_{f}.xml"
+        ))
+    });
+    let watch = "PRG_Main.fbWorker.nState,PRG_Main.fbWorker.bBusy,PRG_Main.fbWorker.bErr,PRG_Main.fbWorker.nErrId";
+    let (trace, _) = run_stimulated_files(
+        &files,
+        &["--cycle-ms", "10"],
+        510,
+        "2,PRG_Main.bStart,TRUE\n",
+        watch,
+    );
+    let state = column(&trace, "PRG_Main.fbWorker.nState");
+    let busy = column(&trace, "PRG_Main.fbWorker.bBusy");
+    let err = column(&trace, "PRG_Main.fbWorker.bErr");
+    assert_eq!(state[..3], [0.0, 0.0, 10.0]);
+    assert_eq!(busy[..4], [0.0, 0.0, 0.0, 1.0]);
+    // the watchdog runs from cycle 3 (state 10): Q after 5 s, at cycle 503
+    let first_error = state.iter().position(|s| *s == 99.0).unwrap();
+    assert_eq!(first_error, 503, "{:?}", &state[498..506]);
+    assert_eq!(err[first_error + 1], 1.0);
+    assert_eq!(busy[first_error + 1], 0.0);
+    assert_eq!(
+        column(&trace, "PRG_Main.fbWorker.nErrId")[first_error],
+        100.0
     );
 }
