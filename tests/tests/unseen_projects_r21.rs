@@ -454,11 +454,7 @@ END_ACTIONS
 #[test]
 fn a_required_input_may_be_bound_by_another_call_of_the_instance() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("reset.axes.json"),
-        r#"{ "cycle_ms": 10, "axes": [ { "name": "X", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0, "link": "MAIN.ax" } ] }"#,
-    )
-    .unwrap();
+    axes_file(dir.path(), "reset");
     let src = |second: &str| {
         format!(
             "PROGRAM MAIN\nVAR\n    ax : AXIS_REF;\n    rst : MC_Reset;\n    go : BOOL;\n    st : INT;\nEND_VAR\n\
@@ -744,11 +740,7 @@ PRG_Main.total.busy := PRG_Main.total.n &gt; 15;</xhtml></ST></body>
 #[test]
 fn tc2_mc_direct_sets_the_position_without_a_movement() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("home.axes.json"),
-        r#"{ "cycle_ms": 10, "axes": [ { "name": "X", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0, "link": "MAIN.ax" } ] }"#,
-    )
-    .unwrap();
+    axes_file(dir.path(), "home");
     let f = dir.path().join("home.st");
     std::fs::write(
         &f,
@@ -874,11 +866,7 @@ END_PROGRAM
 #[test]
 fn an_input_left_out_of_a_block_call_keeps_its_last_value() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("keep.axes.json"),
-        r#"{ "cycle_ms": 10, "axes": [ { "name": "X", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0, "link": "MAIN.ax" } ] }"#,
-    )
-    .unwrap();
+    axes_file(dir.path(), "keep");
     let f = dir.path().join("keep.st");
     std::fs::write(
         &f,
@@ -1009,4 +997,14 @@ fn festo_exports_of_one_object_each_run_together() {
         column(&trace, "PRG_Main.fbWorker.nErrId")[first_error],
         100.0
     );
+}
+
+/// An axes file `<stem>.axes.json` in `dir`: one axis X (mm, 100 mm/s, 1000 mm/s²) linked to
+/// `MAIN.ax`, for the source `<stem>.st` beside it.
+fn axes_file(dir: &std::path::Path, stem: &str) {
+    std::fs::write(
+        dir.join(format!("{stem}.axes.json")),
+        r#"{ "cycle_ms": 10, "axes": [ { "name": "X", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0, "link": "MAIN.ax" } ] }"#,
+    )
+    .unwrap();
 }
