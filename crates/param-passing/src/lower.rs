@@ -937,6 +937,7 @@ impl PouLowering<'_> {
         let name = format!("{}_{n}", t.block);
         let mut head = Vec::new();
         let mut tail = Vec::new();
+        let bound: Vec<&Param> = bound_inputs(t, args).collect();
         for p in &t.params {
             let local = format!("{}_{n}", p.abbr);
             // An array becomes the elements `Pos_1[0]`, `Pos_1[1]` ... of one C array local.
@@ -954,7 +955,7 @@ impl PouLowering<'_> {
             }
             // a bound input back into the instance after the call (kept for the next call that
             // leaves it out), inside the one function
-            if bound_inputs(t, args).any(|b| std::ptr::eq(b, p)) {
+            if bound.iter().any(|b| std::ptr::eq(*b, p)) {
                 tail.push(Feedback {
                     target: field(instance, &p.name),
                     local: local_of(0),
