@@ -1424,18 +1424,23 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
         !own.contains(&t.name.to_ascii_uppercase())
             && (lib.get(&t.name).is_some() || t.is("AXIS_REF") || t.is("AXES_GROUP_REF"))
     };
+    // `fbPower : ARRAY [1..4] OF MC_Power;`, `axes : ARRAY [1..4] OF AXIS_REF;`
+    let library = |mut ty: &TypeRef| {
+        while let TypeRef::Array { element, .. } = ty {
+            ty = element;
+        }
+        matches!(ty, TypeRef::Named(t) if library_type(t))
+    };
     units.iter().flat_map(|u| u.items.iter()).any(|item| {
         item.var_blocks()
             .iter()
             .flat_map(|b| b.vars.iter())
-            .any(|v| {
-                // `fbPower : ARRAY [1..4] OF MC_Power;`, `axes : ARRAY [1..4] OF AXIS_REF;`
-                let mut ty = &v.ty;
-                while let TypeRef::Array { element, .. } = ty {
-                    ty = element;
-                }
-                matches!(ty, TypeRef::Named(t) if library_type(t))
-            })
+            .any(|v| library(&v.ty))
+            // a structure's field (`Axis : AXIS_REF;` of ISIS's ST_AxisControl)
+            || matches!(item, LibraryElement::DataTypes(ts) if ts.iter().any(|t| matches!(
+                &t.def,
+                il_frontend::ast::TypeDef::Struct { fields } if fields.iter().any(|f| library(&f.ty))
+            )))
     })
 }
 

@@ -145,42 +145,156 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
     }
 }
 
-/// The `AXIS_REF` variables of `vars`.
-pub fn axis_refs<'a>(vars: impl Iterator<Item = &'a VarDecl>) -> Vec<Ident> {
-    vars.filter(|v| matches!(&v.ty, TypeRef::Named(t) if t.is("AXIS_REF")))
-        .map(|v| v.name.clone())
-        .collect()
+/// One step from a variable to the `AXIS_REF` inside it: a field of a structure, or an element
+/// of a one-dimensional array (its bounds).
+#[derive(Clone, Debug)]
+pub enum Step {
+    /// `.name`
+    Field(Ident),
+    /// `[i]`
+    Index(ArrayDim),
 }
 
-/// The most elements of an `ARRAY OF AXIS_REF` whose members are read (the hidden blocks are
-/// called element by element, unrolled).
-pub const MAX_ARRAY_AXES: i128 = 64;
+/// Where an `AXIS_REF` sits: a variable (`Axis`), an element of an array (`axisRefs[i]`), a field
+/// of a structure (`AxisController.Axis`), or any nesting of these (`GVL.axes[i].Axis`).
+#[derive(Clone, Debug)]
+pub struct AxisPath {
+    /// The variable.
+    pub root: Ident,
+    /// The fields and indexes from the variable to the axis.
+    pub steps: Vec<Step>,
+}
 
-/// The one-dimensional `ARRAY [l..u] OF AXIS_REF` variables of `vars` (of at most
-/// [`MAX_ARRAY_AXES`] elements), with their bounds.
-pub fn axis_ref_arrays<'a>(vars: impl Iterator<Item = &'a VarDecl>) -> Vec<(Ident, ArrayDim)> {
-    vars.filter_map(|v| match &v.ty {
-        TypeRef::Array { dims, element, .. }
-            if matches!(element.as_ref(), TypeRef::Named(t) if t.is("AXIS_REF")) =>
-        {
-            match dims.as_slice() {
-                [d] if d.upper >= d.lower && d.upper - d.lower < MAX_ARRAY_AXES => {
-                    Some((v.name.clone(), d.clone()))
-                }
-                _ => None,
+impl AxisPath {
+    /// The path without its indexes, upper case, parts joined by `__` (a user's name has no
+    /// `__`, so two paths never share a key): `AXIS`, `AXES__AXIS`.
+    fn key(&self) -> String {
+        let mut k = self.root.key();
+        for s in &self.steps {
+            if let Step::Field(f) = s {
+                k.push_str("__");
+                k.push_str(&f.key());
             }
         }
-        _ => None,
-    })
-    .collect()
+        k
+    }
+    /// The bounds of the path's indexes, in order.
+    fn dims(&self) -> Vec<ArrayDim> {
+        self.steps
+            .iter()
+            .filter_map(|s| match s {
+                Step::Index(d) => Some(d.clone()),
+                Step::Field(_) => None,
+            })
+            .collect()
+    }
+    /// `v`'s indexes and the accessors after the axis, when `v` goes through this path (one
+    /// operand per index: the arrays read are one-dimensional; another count is the semantic
+    /// checks' error, on the user's names).
+    fn matches(&self, v: &VarRef) -> Option<(Vec<Operand>, Vec<Accessor>)> {
+        if v.base.key() != self.root.key() || v.accessors.len() < self.steps.len() {
+            return None;
+        }
+        let mut index = Vec::new();
+        for (s, a) in self.steps.iter().zip(v.accessors.iter()) {
+            match (s, a) {
+                (Step::Field(f), Accessor::Field(g)) if f.key() == g.key() => {}
+                (Step::Index(_), Accessor::Index(ix)) if ix.len() == 1 => index.push(ix[0].clone()),
+                _ => return None,
+            }
+        }
+        Some((index, v.accessors[self.steps.len()..].to_vec()))
+    }
+    /// The axis itself with the indexes `index` (`GVL.axes[i].Axis`), then `field` when given.
+    fn reference(&self, index: &[Operand], field: Option<&str>, at: Span) -> VarRef {
+        let mut ix = index.iter();
+        let mut accessors: Vec<Accessor> = self
+            .steps
+            .iter()
+            .map(|s| match s {
+                Step::Field(f) => Accessor::Field(Ident::new(f.name.clone(), at)),
+                Step::Index(_) => Accessor::Index(ix.next().cloned().into_iter().collect()),
+            })
+            .collect();
+        accessors.extend(field.map(|f| Accessor::Field(Ident::new(f, at))));
+        VarRef {
+            base: Ident::new(self.root.name.clone(), self.root.span),
+            accessors: accessors.into(),
+            span: at,
+        }
+    }
 }
 
-/// The `AXIS_REF` variables a POU reads: its own and the project's global ones.
+/// The most elements of an `ARRAY OF AXIS_REF` (or of arrays of structures holding one) whose
+/// members are read (the hidden blocks are called element by element, unrolled).
+pub const MAX_ARRAY_AXES: i128 = 64;
+
+/// The fields of the declared structures, by type key ([`crate::tc2_mc2::declared_types`]).
+pub type Structs = std::collections::HashMap<String, std::collections::HashMap<String, TypeRef>>;
+
+/// The `AXIS_REF`s inside `vars`: each variable of that type, each one-dimensional array of them,
+/// each field of a declared structure, nested up to four steps deep, with at most
+/// [`MAX_ARRAY_AXES`] axes a path (sorted by field name where a structure holds several).
+pub fn axis_paths<'a>(vars: impl Iterator<Item = &'a VarDecl>, structs: &Structs) -> Vec<AxisPath> {
+    fn walk(
+        ty: &TypeRef,
+        steps: &mut Vec<Step>,
+        count: i128,
+        structs: &Structs,
+        out: &mut Vec<Vec<Step>>,
+    ) {
+        if steps.len() > 4 {
+            return;
+        }
+        match ty {
+            TypeRef::Named(t) if t.is("AXIS_REF") => out.push(steps.clone()),
+            TypeRef::Named(t) => {
+                let Some(fields) = structs.get(&t.key()) else {
+                    return;
+                };
+                let mut names: Vec<&String> = fields.keys().collect();
+                names.sort();
+                for n in names {
+                    steps.push(Step::Field(Ident::new(n.clone(), t.span)));
+                    walk(&fields[n], steps, count, structs, out);
+                    steps.pop();
+                }
+            }
+            TypeRef::Array { dims, element, .. } => match dims.as_slice() {
+                [d] if d.upper >= d.lower
+                    && (d.upper - d.lower + 1).saturating_mul(count) <= MAX_ARRAY_AXES =>
+                {
+                    steps.push(Step::Index(d.clone()));
+                    walk(
+                        element,
+                        steps,
+                        count * (d.upper - d.lower + 1),
+                        structs,
+                        out,
+                    );
+                    steps.pop();
+                }
+                _ => {}
+            },
+            _ => {}
+        }
+    }
+    let mut paths = Vec::new();
+    for v in vars {
+        let mut found = Vec::new();
+        walk(&v.ty, &mut Vec::new(), 1, structs, &mut found);
+        paths.extend(found.into_iter().map(|steps| AxisPath {
+            root: v.name.clone(),
+            steps,
+        }));
+    }
+    paths
+}
+
+/// The `AXIS_REF`s a POU reads: its own and the project's global ones.
 pub struct Axes {
-    /// The variables.
-    pub names: Vec<Ident>,
-    /// The arrays of axes ([`axis_ref_arrays`]).
-    pub arrays: Vec<(Ident, ArrayDim)>,
+    /// Where they sit ([`axis_paths`]).
+    pub paths: Vec<AxisPath>,
     /// (global variable list, variable), upper case: `GVL_Axes.Axis1` names `Axis1`.
     pub lists: Vec<(String, String)>,
     /// Set when a body reads an axis's calibration (`Status.Homed`, `NcToPlc.StateDWord`): the
@@ -190,14 +304,13 @@ pub struct Axes {
     pub torque_noted: std::cell::Cell<bool>,
 }
 
-/// The axes whose members a body reads: scalars and arrays (each once).
+/// The axes whose members a body reads (each once).
 #[derive(Default)]
 struct Used {
-    scalars: Vec<Ident>,
-    arrays: Vec<(Ident, ArrayDim)>,
-    /// The axes (upper case) whose `NcToPlc.ErrorCode` is read.
+    paths: Vec<AxisPath>,
+    /// The axes (path keys) whose `NcToPlc.ErrorCode` is read.
     error_codes: Vec<String>,
-    /// The axes (upper case) with a [`COMPUTED`] member read.
+    /// The axes (path keys) with a [`COMPUTED`] member read.
     computed: Vec<String>,
     /// `Status.Homed` or `NcToPlc.StateDWord` is read.
     homed: bool,
@@ -206,18 +319,9 @@ struct Used {
 }
 
 impl Used {
-    fn note(&mut self, a: &Ident, dim: Option<&ArrayDim>) {
-        match dim {
-            None => {
-                if !self.scalars.iter().any(|u| u.key() == a.key()) {
-                    self.scalars.push(a.clone());
-                }
-            }
-            Some(d) => {
-                if !self.arrays.iter().any(|(u, _)| u.key() == a.key()) {
-                    self.arrays.push((a.clone(), d.clone()));
-                }
-            }
+    fn note(&mut self, a: &AxisPath) {
+        if !self.paths.iter().any(|u| u.key() == a.key()) {
+            self.paths.push(a.clone());
         }
     }
 }
@@ -235,25 +339,30 @@ impl Axes {
             v.accessors = rest.into();
         }
     }
-    fn find(&self, v: &VarRef) -> Option<&Ident> {
-        self.names.iter().find(|a| a.key() == v.base.key())
-    }
-    fn find_array(&self, v: &VarRef) -> Option<&(Ident, ArrayDim)> {
-        self.arrays.iter().find(|(a, _)| a.key() == v.base.key())
+    /// The axis `v` goes through, its indexes and the accessors after it.
+    fn find(&self, v: &VarRef) -> Option<(&AxisPath, Vec<Operand>, Vec<Accessor>)> {
+        self.paths
+            .iter()
+            .find_map(|p| p.matches(v).map(|(ix, rest)| (p, ix, rest)))
     }
 }
 
-/// Reads the Tc2_MC2 members of the POU's `AXIS_REF` variables and of the project's global ones
-/// (see the module header).
-pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
+/// Reads the Tc2_MC2 members of the POU's `AXIS_REF`s and of the project's global ones (see the
+/// module header).
+pub fn read_members(p: &mut Pou, globals: &Axes, structs: &Structs, diags: &mut Diagnostics) {
     let own = p.var_blocks.iter().flat_map(|b| b.vars.iter());
-    let mut names = axis_refs(own.clone());
-    names.extend(globals.names.iter().cloned());
-    let mut arrays = axis_ref_arrays(own);
-    arrays.extend(globals.arrays.iter().cloned());
+    let mut paths = axis_paths(own, structs);
+    // a POU's own variable hides a global of the same name
+    paths.extend(
+        globals
+            .paths
+            .iter()
+            .filter(|g| !paths.iter().any(|o| o.root.key() == g.root.key()))
+            .cloned()
+            .collect::<Vec<_>>(),
+    );
     let axes = Axes {
-        names,
-        arrays,
+        paths,
         lists: globals.lists.clone(),
         homed_read: Default::default(),
         torque_noted: Default::default(),
@@ -276,104 +385,65 @@ pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
             .with_hint("ladderc's drive follows its set point without a load; the run has no torque to report"),
         );
     }
-    if used.scalars.is_empty() && used.arrays.is_empty() {
+    if used.paths.is_empty() {
         return;
     }
     let mut hidden = Vec::new();
     let mut prologue = Vec::new();
-    let axes_used = used
-        .scalars
-        .iter()
-        .map(|a| (a, None))
-        .chain(used.arrays.iter().map(|(a, d)| (a, Some(d))));
-    for (axis, dim) in axes_used {
-        let at = axis.span;
+    for axis in &used.paths {
+        let at = axis.root.span;
+        let dims = axis.dims();
         let ty = |name: &str| {
             let one = TypeRef::Named(Ident::new(name, at));
-            match dim {
-                None => one,
-                Some(d) => TypeRef::Array {
-                    dims: vec![d.clone()],
+            if dims.is_empty() {
+                one
+            } else {
+                TypeRef::Array {
+                    dims: dims.clone(),
                     element: Box::new(one),
                     span: at,
-                },
+                }
             }
         };
-        // the elements, in order (a scalar axis: one, without an index)
-        let elements: Vec<Option<Vec<Operand>>> = match dim {
-            None => vec![None],
-            Some(d) => (d.lower..=d.upper)
-                .map(|k| {
-                    Some(vec![Operand::literal(Literal {
-                        kind: LiteralKind::Int(k),
-                        type_prefix: None,
-                        span: at,
-                    })])
-                })
-                .collect(),
+        // the elements, in order (an axis outside arrays: one, without an index)
+        let elements = elements(&dims, at);
+        let mut decl = |what: &str, ty: TypeRef| {
+            hidden.push(VarDecl {
+                name: Ident::new(hidden_name(axis, what), at),
+                location: None,
+                ty,
+                init: None,
+                edge: None,
+                span: at,
+            })
         };
         for (suffix, block) in [
             ("STATUS", "MC_ReadStatus"),
             ("POS", "MC_ReadActualPosition"),
             ("VELO", "MC_ReadActualVelocity"),
         ] {
-            hidden.push(VarDecl {
-                name: Ident::new(hidden_name(axis, suffix), at),
-                location: None,
-                ty: ty(block),
-                init: None,
-                edge: None,
-                span: at,
-            });
-            prologue.extend(elements.iter().map(|ix| call(axis, suffix, ix.clone())));
+            decl(suffix, ty(block));
+            prologue.extend(elements.iter().map(|ix| call(axis, suffix, ix)));
         }
         for flag in ["MOVING", "NOTMOVING"] {
-            hidden.push(VarDecl {
-                name: Ident::new(hidden_name(axis, flag), at),
-                location: None,
-                ty: ty("BOOL"),
-                init: None,
-                edge: None,
-                span: at,
-            });
+            decl(flag, ty("BOOL"));
         }
         for ix in &elements {
-            prologue.extend(moving(axis, ix.clone()));
+            prologue.extend(moving(axis, ix));
         }
         if used.computed.contains(&axis.key()) {
             for (name, ty_name) in COMPUTED {
-                hidden.push(VarDecl {
-                    name: Ident::new(hidden_name(axis, name), at),
-                    location: None,
-                    ty: ty(ty_name),
-                    init: None,
-                    edge: None,
-                    span: at,
-                });
+                decl(name, ty(ty_name));
             }
             for ix in &elements {
-                prologue.extend(computed(axis, ix.clone()));
+                prologue.extend(computed(axis, ix));
             }
         }
         if used.error_codes.contains(&axis.key()) {
-            hidden.push(VarDecl {
-                name: Ident::new(hidden_name(axis, "AXERR"), at),
-                location: None,
-                ty: ty("MC_ReadAxisError"),
-                init: None,
-                edge: None,
-                span: at,
-            });
-            hidden.push(VarDecl {
-                name: Ident::new(hidden_name(axis, "ERRORCODE"), at),
-                location: None,
-                ty: ty("UDINT"),
-                init: None,
-                edge: None,
-                span: at,
-            });
+            decl("AXERR", ty("MC_ReadAxisError"));
+            decl("ERRORCODE", ty("UDINT"));
             for ix in &elements {
-                prologue.extend(error_code(axis, ix.clone()));
+                prologue.extend(error_code(axis, ix));
             }
         }
     }
@@ -381,8 +451,37 @@ pub fn read_members(p: &mut Pou, globals: &Axes, diags: &mut Diagnostics) {
     p.body.splice(0..0, prologue);
 }
 
-fn hidden_name(axis: &Ident, what: &str) -> String {
+/// Every index combination of `dims` in order, as literal operands (no dims: one, empty).
+fn elements(dims: &[ArrayDim], at: Span) -> Vec<Vec<Operand>> {
+    let mut out: Vec<Vec<Operand>> = vec![Vec::new()];
+    for d in dims {
+        out = out
+            .into_iter()
+            .flat_map(|prefix| {
+                (d.lower..=d.upper).map(move |k| {
+                    let mut ix = prefix.clone();
+                    ix.push(Operand::literal(Literal {
+                        kind: LiteralKind::Int(k),
+                        type_prefix: None,
+                        span: at,
+                    }));
+                    ix
+                })
+            })
+            .collect();
+    }
+    out
+}
+
+fn hidden_name(axis: &AxisPath, what: &str) -> String {
     format!("__TC2_{}_{what}", axis.key())
+}
+
+/// The hidden variable `what` of `axis` at the indexes `index` (one index of all of them:
+/// the hidden arrays have the path's dimensions), then `field` when given.
+fn hidden(axis: &AxisPath, what: &str, index: &[Operand], field: Option<&str>, at: Span) -> VarRef {
+    let index = (!index.is_empty()).then(|| index.to_vec());
+    indexed(hidden_name(axis, what), index, field, at)
 }
 
 /// `name[index].field`, each part when given.
@@ -413,16 +512,13 @@ pub(crate) fn input_arg(name: &str, value: Operand, at: Span) -> FormalArg {
     }
 }
 
-/// `CAL __TC2_<AXIS>_<suffix>(Axis := <axis>, Enable := TRUE)`; of an array of axes, of the
-/// element `index` (`CAL __TC2_<AXIS>_<suffix>[i](Axis := <axis>[i], ...)`).
-fn call(axis: &Ident, suffix: &str, index: Option<Vec<Operand>>) -> IlStmt {
-    let at = axis.span;
+/// `CAL __TC2_<AXIS>_<suffix>(Axis := <axis>, Enable := TRUE)`; of an axis inside arrays, of
+/// the element `index` (`CAL __TC2_<AXES__AXIS>_<suffix>[i](Axis := axes[i].Axis, ...)`).
+fn call(axis: &AxisPath, suffix: &str, index: &[Operand]) -> IlStmt {
+    let at = axis.root.span;
     let arg = |name: &str, value: Operand| input_arg(name, value, at);
     let args = vec![
-        arg(
-            "Axis",
-            Operand::Var(indexed(axis.name.clone(), index.clone(), None, at)),
-        ),
+        arg("Axis", Operand::Var(axis.reference(index, None, at))),
         arg(
             "Enable",
             Operand::literal(Literal {
@@ -435,7 +531,7 @@ fn call(axis: &Ident, suffix: &str, index: Option<Vec<Operand>>) -> IlStmt {
     instr(
         InstrKind::Call {
             cond: Condition::Always,
-            instance: Box::new(indexed(hidden_name(axis, suffix), index, None, at)),
+            instance: Box::new(hidden(axis, suffix, index, None, at)),
             args: CallArgs::Formal(args),
         },
         at,
@@ -443,22 +539,17 @@ fn call(axis: &Ident, suffix: &str, index: Option<Vec<Operand>>) -> IlStmt {
 }
 
 /// `CAL __TC2_<AXIS>_AXERR(...)`, `LD __TC2_<AXIS>_AXERR.AxisErrorID WORD_TO_UDINT ST
-/// __TC2_<AXIS>_ERRORCODE` (of the element `index` of an array of axes): Tc2_MC2's
-/// `NcToPlc.ErrorCode` (UDINT, 0 while the axis has no error) read as the simulated axis's error
-/// (MC_ReadAxisError's AxisErrorID, ladderc's ErrorID numbers).
-fn error_code(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
-    let at = axis.span;
+/// __TC2_<AXIS>_ERRORCODE` (of the element `index`): Tc2_MC2's `NcToPlc.ErrorCode` (UDINT, 0
+/// while the axis has no error) read as the simulated axis's error (MC_ReadAxisError's
+/// AxisErrorID, ladderc's ErrorID numbers).
+fn error_code(axis: &AxisPath, index: &[Operand]) -> Vec<IlStmt> {
+    let at = axis.root.span;
     let simple = |op: Op, v: VarRef| var_instr(op, v, at);
     vec![
-        call(axis, "AXERR", index.clone()),
+        call(axis, "AXERR", index),
         simple(
             Op::Ld,
-            indexed(
-                hidden_name(axis, "AXERR"),
-                index.clone(),
-                Some("AxisErrorID"),
-                at,
-            ),
+            hidden(axis, "AXERR", index, Some("AxisErrorID"), at),
         ),
         instr(
             InstrKind::FunctionCall {
@@ -467,25 +558,21 @@ fn error_code(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
             },
             at,
         ),
-        simple(
-            Op::St,
-            indexed(hidden_name(axis, "ERRORCODE"), index, None, at),
-        ),
+        simple(Op::St, hidden(axis, "ERRORCODE", index, None, at)),
     ]
 }
 
 /// `LD status.DiscreteMotion OR ... ST __TC2_<AXIS>_MOVING STN __TC2_<AXIS>_NOTMOVING` (of
-/// the element `index` of an array of axes).
-fn moving(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
-    let at = axis.span;
+/// the element `index`).
+fn moving(axis: &AxisPath, index: &[Operand]) -> Vec<IlStmt> {
+    let at = axis.root.span;
     let simple = |op: Op, v: VarRef| var_instr(op, v, at);
     let mut out = Vec::new();
     for (k, f) in MOVING.iter().enumerate() {
         let op = if k == 0 { Op::Ld } else { Op::Or };
-        let status = indexed(hidden_name(axis, "STATUS"), index.clone(), Some(f), at);
-        out.push(simple(op, status));
+        out.push(simple(op, hidden(axis, "STATUS", index, Some(f), at)));
     }
-    let flag = |name: &str| indexed(hidden_name(axis, name), index.clone(), None, at);
+    let flag = |name: &str| hidden(axis, name, index, None, at);
     out.push(simple(Op::St, flag("MOVING")));
     out.push(instr(
         InstrKind::Simple {
@@ -516,19 +603,12 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagno
             }
             InstrKind::Call { instance, args, .. } => {
                 axes.unqualify(instance);
-                let axis = axes.find(instance);
-                let array = axes.find_array(instance);
-                match (axis, array, instance.accessors.as_slice()) {
-                    (Some(a), _, [Accessor::Field(m)]) if m.key() == "READSTATUS" => {
-                        used.note(a, None);
-                        replace = Some(call(a, "STATUS", None));
-                    }
-                    // `axisRefs[i].ReadStatus()`
-                    (None, Some((a, d)), [Accessor::Index(ix), Accessor::Field(m)])
-                        if m.key() == "READSTATUS" && ix.len() == 1 =>
+                match axes.find(instance) {
+                    // `Axis.ReadStatus()`, `axisRefs[i].ReadStatus()`, `s.Axis.ReadStatus()`
+                    Some((a, ix, rest)) if matches!(rest.as_slice(), [Accessor::Field(m)] if m.key() == "READSTATUS") =>
                     {
-                        used.note(a, Some(d));
-                        replace = Some(call(a, "STATUS", Some(ix.clone())));
+                        used.note(a);
+                        replace = Some(call(a, "STATUS", &ix));
                     }
                     _ => {
                         let _ = member(instance, axes, used, diags);
@@ -579,21 +659,8 @@ fn member(
 ) -> Option<LiteralKind> {
     let mut q = v.clone();
     axes.unqualify(&mut q);
-    // a scalar axis (`Axis.Status.Error`) or an element of an array of axes
-    // (`axisRefs[i].Status.Error`): the axis, its bounds and index, the members after it
-    let (axis, dim, index, rest) = match (axes.find(&q), axes.find_array(&q)) {
-        (Some(a), _) => (a.clone(), None, None, q.accessors.to_vec()),
-        // one index (the arrays read are one-dimensional; another count is the semantic
-        // checks' error, on the user's names)
-        (None, Some((a, d))) => match q.accessors.split_first() {
-            Some((Accessor::Index(ix), rest)) if ix.len() == 1 => {
-                (a.clone(), Some(d.clone()), Some(ix.clone()), rest.to_vec())
-            }
-            _ => return None,
-        },
-        (None, None) => return None,
-    };
-    let axis = &axis;
+    // the axis (`Axis`, `axisRefs[i]`, `GVL.axes[i].Axis`), its indexes, the members after it
+    let (axis, index, rest) = axes.find(&q)?;
     let [Accessor::Field(group), Accessor::Field(f), ..] = rest.as_slice() else {
         return None;
     };
@@ -624,13 +691,9 @@ fn member(
                 return None;
             }
             used.homed = true;
-            used.note(axis, dim.as_ref());
+            used.note(axis);
             let at = v.span;
-            let axis_no = {
-                let mut r = indexed(axis.name.clone(), index, Some("AxisNo"), at);
-                r.base.span = axis.span;
-                r
-            };
+            let axis_no = axis.reference(&index, Some("AxisNo"), at);
             *v = VarRef {
                 base: Ident::new(table, at),
                 accessors: vec![Accessor::Index(vec![Operand::Var(axis_no)])].into(),
@@ -682,8 +745,9 @@ fn member(
     if rest.len() > 2 + usize::from(bit.is_some()) {
         return None;
     }
-    used.note(axis, dim.as_ref());
+    used.note(axis);
     let at = v.span;
+    let index = (!index.is_empty()).then_some(index);
     *v = indexed(name, index, out, at);
     if let Some(b) = bit {
         let mut acc = v.accessors.to_vec();
@@ -693,19 +757,16 @@ fn member(
     None
 }
 
-/// The prologue of the [`COMPUTED`] members of one axis (of the element `index` of an array of
-/// axes), from the hidden MC_ReadStatus and MC_ReadActualVelocity and the calibration table:
+/// The prologue of the [`COMPUTED`] members of one axis (of the element `index`), from the hidden MC_ReadStatus and MC_ReadActualVelocity and the calibration table:
 /// `Operational` (powered, no error), `ControlLoopClosed` (powered), `PositiveDirection` /
 /// `NegativeDirection` (the sign of the velocity), `CoupleState` (3 "slave" in synchronized
 /// motion, else 0 "single axis": ladderc's status does not tell a master), `StateDWord`
 /// (NCTOPLC_AXIS_REF_STATE's bits: 0 Operational, 1 Homed, 2 NotMoving, 3 InPositionArea,
 /// 4 InTargetPosition, 8 HasJob, 9 PositiveDirection, 10 NegativeDirection, 11 HomingBusy,
 /// 19 ContinuousMotion, 20 ControlLoopClosed, 31 Error; the others 0).
-fn computed(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
-    let at = axis.span;
-    let hidden = |name: &str, field: Option<&str>| {
-        indexed(hidden_name(axis, name), index.clone(), field, at)
-    };
+fn computed(axis: &AxisPath, index: &[Operand]) -> Vec<IlStmt> {
+    let at = axis.root.span;
+    let hidden = |name: &str, field: Option<&str>| hidden(axis, name, index, field, at);
     let status = |f: &str| hidden("STATUS", Some(f));
     let op = |op: Op, negate: bool, v: VarRef| {
         instr(
@@ -741,9 +802,8 @@ fn computed(axis: &Ident, index: Option<Vec<Operand>>) -> Vec<IlStmt> {
     };
     let homed = VarRef {
         base: Ident::new("__TC2_HOMED", at),
-        accessors: vec![Accessor::Index(vec![Operand::Var(indexed(
-            axis.name.clone(),
-            index.clone(),
+        accessors: vec![Accessor::Index(vec![Operand::Var(axis.reference(
+            index,
             Some("AxisNo"),
             at,
         ))])]

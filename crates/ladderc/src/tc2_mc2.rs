@@ -76,33 +76,29 @@ pub fn read_spellings(
     diags: &mut Diagnostics,
 ) {
     let tables = std::cell::Cell::new(false);
+    // the declared types: the structures that hold an AXIS_REF, Tc2_MC2's UDINT ErrorID
+    // (`tc2_error_id`)
+    let (structs, global_types) = declared_types(units);
     let mut globals = crate::tc2_axis_ref::Axes {
-        names: Vec::new(),
-        arrays: Vec::new(),
+        paths: Vec::new(),
         lists: Vec::new(),
         homed_read: Default::default(),
         torque_noted: Default::default(),
     };
     for item in units.iter().flat_map(|u| u.items.iter()) {
         if let LibraryElement::GlobalVars(b) = item {
-            let arrays = crate::tc2_axis_ref::axis_ref_arrays(b.vars.iter());
+            let paths = crate::tc2_axis_ref::axis_paths(b.vars.iter(), &structs);
             if let Some(list) = &b.name {
-                globals
-                    .lists
-                    .extend(arrays.iter().map(|(n, _)| (list.key(), n.key())));
+                for p in &paths {
+                    let pair = (list.key(), p.root.key());
+                    if !globals.lists.contains(&pair) {
+                        globals.lists.push(pair);
+                    }
+                }
             }
-            globals.arrays.extend(arrays);
-            let names = crate::tc2_axis_ref::axis_refs(b.vars.iter());
-            if let Some(list) = &b.name {
-                globals
-                    .lists
-                    .extend(names.iter().map(|n| (list.key(), n.key())));
-            }
-            globals.names.extend(names);
+            globals.paths.extend(paths);
         }
     }
-    // the declared types, for Tc2_MC2's UDINT ErrorID (`tc2_error_id`)
-    let (structs, global_types) = declared_types(units);
     for u in units.iter_mut() {
         for item in &mut u.items {
             // `eDir : MC_Direction := MC_Direction.MC_Shortest_Way;`
@@ -121,7 +117,7 @@ pub fn read_spellings(
             let LibraryElement::Pou(p) = item else {
                 continue;
             };
-            crate::tc2_axis_ref::read_members(p, &globals, diags);
+            crate::tc2_axis_ref::read_members(p, &globals, &structs, diags);
             let instances: HashMap<String, String> = p
                 .var_blocks
                 .iter()

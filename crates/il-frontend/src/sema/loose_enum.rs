@@ -70,6 +70,7 @@ impl Body<'_, '_> {
             return;
         }
         let n = self.a.type_name(t);
+        let loose = is_loose(&self.a.model, t);
         self.a
             .warning(
                 code::W1439,
@@ -77,6 +78,10 @@ impl Body<'_, '_> {
                 format!("the enumeration {n} used as an integer: IEC 61131-3 enumerations are no numbers (its other uses in this POU are not reported)"),
             )
             .label("an enumerated value and an integer meet here")
-            .hint(format!("compiled as CODESYS and TwinCAT do for an enumeration without {{attribute 'strict'}} (its number); convert with TO_DINT or declare the variable {n} for another IEC compiler"));
+            .hint(if loose {
+                format!("compiled as CODESYS and TwinCAT do for an enumeration without {{attribute 'strict'}} (its number); convert with TO_DINT or declare the variable {n} for another IEC compiler")
+            } else {
+                format!("an array index: CODESYS and TwinCAT index by the number of {n}, also under {{attribute 'strict'}} (it forbids arithmetic and storing other values, not indexing); write TO_DINT(...) for another IEC compiler")
+            });
     }
 }

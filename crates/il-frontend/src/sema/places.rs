@@ -514,6 +514,11 @@ impl Body<'_, '_> {
             Ty::Known(t) if super::loose_enum::is_loose(&self.a.model, &t) => {
                 self.enum_as_integer(&t, ix.span());
             }
+            // a strict one too: {attribute 'strict'} forbids arithmetic and storing other values
+            // (Infosys, Attribute 'strict'), not indexing (ISIS's `fParameters[eRWParameter.X]`)
+            Ty::Known(t @ Type::Enum(_)) => {
+                self.enum_as_integer(&t, ix.span());
+            }
             Ty::Lit(var) => {
                 // An index literal is a DINT unless it does not fit.
                 if self.lits.bind(var, &Type::DINT).is_err() {

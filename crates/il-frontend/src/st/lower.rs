@@ -2846,7 +2846,10 @@ fn divides_integers(e: &Expr) -> bool {
                 stack.push(right);
             }
             ExprKind::Unary { operand, .. } => stack.push(operand),
-            _ => {}
+            ExprKind::Literal(_) => {}
+            // a value whose type the lowering does not know (`Axis.NcToPlc.ActPos`, read by
+            // the Tc2_MC2 pass): not a literal, so no integer division is forced on it
+            _ => return false,
         }
     }
     divides
