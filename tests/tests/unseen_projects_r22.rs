@@ -5,10 +5,13 @@
 //!   `NcToPlc.` members read the simulated axis as those of a plain AXIS_REF do (before: E1021
 //!   "AXIS_REF has no field `NcToPlc`", 28 errors in ISIS), and an integer division forced on
 //!   `(a.NcToPlc.ActPos + b.NcToPlc.ActPos) / 2` is gone (before: a false E1012 "LINT_TO_LREAL
-//!   converts from LINT").
+//!   converts from LINT");
+//! - an instance or structure initializer that starts a pointer as the address of a variable of
+//!   the POU (`fbM : FB_M := (pLamp := ADR(lamp));`, CODESYS, TwinCAT; before: E0011 "unexpected
+//!   `(`"), with the same checks as `p : POINTER TO BOOL := ADR(lamp);`.
 
 mod common;
-use common::{column, run_traced_files};
+use common::{check_text, column, run_text, run_traced_files};
 
 /// Two axes held as `axes[i].Axis` in a global array of structures, each driven by an FB through
 /// its VAR_IN_OUT structure: `AxisController.Axis.ReadStatus()`, `.Status.Moving`,
@@ -97,5 +100,73 @@ END_PROGRAM
         (x[59], y[59], mid[59], gap[59]),
         (10.0, 30.0, 20.0, 20.0),
         "{trace}"
+    );
+}
+
+/// `(pLamp := ADR(lamp))` in an FB instance's initializer and `(p := ADR(arr[2]))` in a
+/// structure's: the pointers start at those variables (the FB toggles `lamp` through its input;
+/// `s.p^` reads `arr[2]`), beside plain values of the same initializers; an address of no variable
+/// of the POU, one stored into an INT input, and another function are located errors.
+#[test]
+fn an_instance_initializer_may_start_a_pointer_at_a_variable() {
+    let src = "TYPE ST_P : STRUCT
+  p : POINTER TO INT;
+  n : INT;
+END_STRUCT;
+END_TYPE
+FUNCTION_BLOCK FB_M
+VAR_INPUT
+    pLamp : POINTER TO BOOL;
+    k : INT;
+END_VAR
+pLamp^ := NOT pLamp^;
+END_FUNCTION_BLOCK
+PROGRAM MAIN
+VAR
+    lamp : BOOL;
+    arr : ARRAY [1..3] OF INT := [1, 2, 3];
+    fbM : FB_M := (pLamp := ADR(lamp), k := 4);
+    s : ST_P := (n := 7, p := ADR(arr[2]));
+    v : INT;
+END_VAR
+fbM();
+v := s.p^ + s.n;
+arr[2] := arr[2] + 1;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("init.st", src, 3, "MAIN.lamp,MAIN.v,MAIN.fbM.k");
+    assert_eq!(
+        trace, "cycle,time_ms,MAIN.lamp,MAIN.v,MAIN.fbM.k\n0,0,1,9,4\n1,10,0,10,4\n2,20,1,11,4\n",
+        "{stderr}"
+    );
+    let bad = "FUNCTION_BLOCK FB_M
+VAR_INPUT
+    pLamp : POINTER TO BOOL;
+    k : INT;
+END_VAR
+END_FUNCTION_BLOCK
+PROGRAM MAIN
+VAR
+    lamp : BOOL;
+    a : FB_M := (pLamp := ADR(nope));
+    b : FB_M := (k := ADR(lamp));
+END_VAR
+a(); b();
+END_PROGRAM
+";
+    let (code, lines) = check_text("bad.st", bad);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(
+        lines,
+        [
+            "bad.st:10:27: error[E0305]: `a.pLamp` cannot start as `ADR(nope)`: `nope` is no variable of this POU (hint: start it as `ADR(x)` of a variable of the same POU whose type it refers to, or set it in the body (`p := ADR(x);`))",
+            "bad.st:11:23: error[E1006]: cannot store an address into INT (hint: `k` is no POINTER TO, REF_TO or REFERENCE TO)",
+        ]
+    );
+    let (code, lines) = check_text("call.st", &bad.replace("ADR(nope)", "FOO(lamp)"));
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines[0],
+        "call.st:10:27: error[E0022]: `FOO(...)` is computed at run time (hint: an initial value is a constant, or `ADR(x)` / `REF(x)` of a variable of the POU; set this one in the body)"
     );
 }

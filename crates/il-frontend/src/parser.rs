@@ -855,6 +855,35 @@ impl<'s> Ctx<'s> {
         TypeRef::Named(name)
     }
 
+    /// `name := ADR(of)` / `REF(of)` in a structure or instance initializer: the address of `of`
+    /// (another function is no initial value: E0022).
+    pub fn address_element(
+        &mut self,
+        name: Ident,
+        l: usize,
+        n: usize,
+        of: VarRef,
+        r: usize,
+    ) -> (Ident, Initializer) {
+        let callee = self.ident(l, n);
+        let span = self.span(l, r);
+        if !(callee.is("ADR") || callee.is("REF")) {
+            self.hint(
+                code::E0022,
+                format!("`{}(...)` is computed at run time", callee.name),
+                l,
+                r,
+                "an initial value is a constant, or `ADR(x)` / `REF(x)` of a variable of the POU; set this one in the body",
+            );
+        }
+        let value = Initializer::Value(Operand::Ref(Box::new(crate::ast::RefOperand {
+            of: Some(of),
+            span,
+            call_scoped: false,
+        })));
+        (name, value)
+    }
+
     /// A call `F(args)` written at `l..r` in a constant expression, `F` at `l..n`. `SIZEOF(x)`: the
     /// bytes of the variable `x` declared before (in this POU, or a global of the text), else of
     /// the data type `x`, in the generated C ([`crate::type_sizes`]); `x` must be a name. Another

@@ -60,7 +60,12 @@ impl Gen<'_> {
             // `p : POINTER TO INT := ADR(a);`: `a` is a variable of the same POU, so its C lvalue
             // is the reference's own with the last name replaced (sema: `address_init`)
             (Type::Ref(_), Some(ConstValue::Address(a))) => {
-                let own = mangle::var(&a.of_var);
+                // of an instance's input (`fbM : FB_M := (pLamp := ADR(lamp))`): the lvalue ends
+                // with the instance's name and the fields to the reference
+                let mut own = mangle::var(&a.of_var);
+                for f in &a.within {
+                    let _ = write!(own, ".{}", mangle::var(f));
+                }
                 let Some(prefix) = lv.strip_suffix(own.as_str()) else {
                     self.unsupported(span, "this address as an initial value");
                     let _ = writeln!(out, "{pad}{lv} = ladderc_ref(NULL, 0);");

@@ -31,6 +31,10 @@ impl Analyzer<'_> {
         pou: Option<ast::PouKind>,
     ) {
         for d in blocks.iter().flat_map(|b| &b.vars) {
+            if let Some(ast::Initializer::Struct(elements, _)) = &d.init {
+                self.address_elements(d, elements, out, pou);
+                continue;
+            }
             let Some(ast::Initializer::Value(Operand::Ref(r))) = &d.init else {
                 continue;
             };
@@ -54,9 +58,97 @@ impl Analyzer<'_> {
                     }
                     out[i].init = Some(ConstValue::Address(AddressInit {
                         of_var: out[i].name.clone(),
+                        within: Vec::new(),
                         base: path.base.name.clone(),
                         steps,
                     }));
+                }
+                Err((code, message)) => {
+                    self.error(code, r.span, message)
+                        .label("initial value")
+                        .hint("start it as `ADR(x)` of a variable of the same POU whose type it refers to, or set it in the body (`p := ADR(x);`)");
+                }
+            }
+        }
+    }
+
+    /// The `name := ADR(path)` elements of the structure or instance initializer of `d` (CODESYS,
+    /// TwinCAT: `fbM : FB_M := (pLamp := ADR(lamp));`): each a pointer field or input of the
+    /// declared type that starts as the address of a variable of the POU, added to the variable's
+    /// initial value (the other elements are there already, `decls`).
+    fn address_elements(
+        &mut self,
+        d: &ast::VarDecl,
+        elements: &[(ast::Ident, ast::Initializer)],
+        out: &mut [Variable],
+        pou: Option<ast::PouKind>,
+    ) {
+        let Some(i) = out.iter().position(|v| v.span == d.name.span) else {
+            return;
+        };
+        for (name, value) in elements {
+            let ast::Initializer::Value(Operand::Ref(r)) = value else {
+                continue;
+            };
+            let Some(path) = &r.of else { continue };
+            let field = match &out[i].ty {
+                Type::Struct(id) => match &self.model.user_type(*id).def {
+                    UserTypeDef::Struct { fields } => fields
+                        .iter()
+                        .find(|f| name.is(&f.name))
+                        .map(|f| (f.name.clone(), f.ty.clone())),
+                    _ => None,
+                },
+                Type::Fb(FbType::User(id)) => self.model.pous[id.0 as usize]
+                    .vars
+                    .iter()
+                    .find(|v| v.is(&name.name) && v.kind != VarKind::InOut)
+                    .map(|v| (v.name.clone(), v.ty.clone())),
+                // reported by `decls` (no such field: E1025)
+                _ => None,
+            };
+            // no such field: E1025 from `decls`; not a reference: E1006 below
+            let Some((field, field_ty)) = field else {
+                continue;
+            };
+            let Type::Ref(target) = field_ty.clone() else {
+                let t = self.type_name(&field_ty);
+                self.error(
+                    code::E1006,
+                    r.span,
+                    format!("cannot store an address into {t}"),
+                )
+                .label("initial value")
+                .hint(format!(
+                    "`{field}` is no POINTER TO, REF_TO or REFERENCE TO"
+                ));
+                continue;
+            };
+            let reference = Variable {
+                name: format!("{}.{field}", out[i].name),
+                ..out[i].clone()
+            };
+            match self.address_of(path, r.span, &reference, &target, out, pou) {
+                Ok((steps, reinterpreted)) => {
+                    if let Some((from, to)) = reinterpreted {
+                        self.warning(
+                            code::W1425,
+                            r.span,
+                            format!("{from} stored into {to}: the pointer reads the same bytes as another type"),
+                        )
+                        .label("initial value")
+                        .hint("IEC 61131-3 keeps references typed; CODESYS and TwinCAT convert pointers freely. Accesses stay inside the variable the pointer was made from and must be aligned for the new type");
+                    }
+                    let address = ConstValue::Address(AddressInit {
+                        of_var: out[i].name.clone(),
+                        within: vec![field.clone()],
+                        base: path.base.name.clone(),
+                        steps,
+                    });
+                    match &mut out[i].init {
+                        Some(ConstValue::Struct(values)) => values.push((field, address)),
+                        other => *other = Some(ConstValue::Struct(vec![(field, address)])),
+                    }
                 }
                 Err((code, message)) => {
                     self.error(code, r.span, message)

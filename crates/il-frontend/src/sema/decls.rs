@@ -1521,9 +1521,9 @@ impl Analyzer<'_> {
                 });
                 self.const_value(&plain, ty, consts)
             }
-            // `p : POINTER TO INT := ADR(a);`: set once every variable of the POU is declared
-            // (`address_init`)
-            Operand::Ref(r) if r.of.is_some() && matches!(ty, Type::Ref(_)) => None,
+            // `p : POINTER TO INT := ADR(a);`, `fbM : FB_M := (pLamp := ADR(lamp))`: set once
+            // every variable of the POU is declared, or refused (`address_init`)
+            Operand::Ref(r) if r.of.is_some() => None,
             // `E_State.Init` (CODESYS, TwinCAT): a value qualified by its enumeration's name
             Operand::Var(v)
                 if matches!(ty, Type::Enum(id)

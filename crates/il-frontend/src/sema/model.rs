@@ -653,8 +653,11 @@ pub enum ConstValue {
 /// The initial value `ADR(path)` of a reference variable of a POU.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct AddressInit {
-    /// The reference variable's own name (its C lvalue ends with it).
+    /// The reference variable's own name (its C lvalue ends with it); of a field or input of an
+    /// instance or structure (`fbM : FB_M := (pLamp := ADR(lamp))`), the instance's name.
     pub of_var: String,
+    /// The fields from `of_var` to the reference (`["pLamp"]`); empty: `of_var` itself.
+    pub within: Vec<String>,
     /// The variable of the same POU the address is taken of.
     pub base: String,
     /// Its fields and zero-based element offsets, in order.
