@@ -8,10 +8,23 @@
 //!   converts from LINT");
 //! - an instance or structure initializer that starts a pointer as the address of a variable of
 //!   the POU (`fbM : FB_M := (pLamp := ADR(lamp));`, CODESYS, TwinCAT; before: E0011 "unexpected
-//!   `(`"), with the same checks as `p : POINTER TO BOOL := ADR(lamp);`.
+//!   `(`"), with the same checks as `p : POINTER TO BOOL := ADR(lamp);`;
+//! - a TwinCAT-encrypted project or object (`TcEncryptedFile~` then cipher text: Teknike's
+//!   Tek824_Frivatti_CLP) is one E1049 (before: read as IL, 742 errors);
+//! - a library reference whose placeholder is written in brackets (`<PlaceholderReference
+//!   Include="[MyLib]">`) is matched by `--lib` (before: E1077 "no input project references");
+//! - `fb : FB_Count();`, an empty FB_init argument list of a block without FB_init (before: E0329);
+//! - a call mixing positional and named arguments of an unknown function or block: the unknown
+//!   callee is the error (E1019, E1003; before: only E3106, the missing library never named);
+//! - `END_VAR;`: the `;` skipped with W0017 (before: every later declaration read as a statement,
+//!   35 errors);
+//! - an ST assignment continued on lines that start with `OR` (`q := a` / `OR b` / `OR c;`) is ST
+//!   (before: the body read as IL); an empty `<ST>` body of a block whose actions do the work is ST
+//!   (before: E0304 about an ACTIONS block the user never wrote).
 
 mod common;
-use common::{check_text, column, run_text, run_traced_files};
+use common::{check_text, column, ladderc, run_text, run_traced_files};
+use std::path::Path;
 
 /// Two axes held as `axes[i].Axis` in a global array of structures, each driven by an FB through
 /// its VAR_IN_OUT structure: `AxisController.Axis.ReadStatus()`, `.Status.Moving`,
@@ -168,5 +181,296 @@ END_PROGRAM
     assert_eq!(
         lines[0],
         "call.st:10:27: error[E0022]: `FOO(...)` is computed at run time (hint: an initial value is a constant, or `ADR(x)` / `REF(x)` of a variable of the POU; set this one in the body)"
+    );
+}
+
+/// A TwinCAT object file `<name>.TcPOU` in `dir`: the declaration, the ST body, and the actions
+/// (name, ST body).
+fn tcpou(dir: &Path, name: &str, decl: &str, body: &str, actions: &[(&str, &str)]) {
+    let actions: String = actions
+        .iter()
+        .map(|(a, b)| {
+            format!("    <Action Name=\"{a}\" Id=\"{{33333333-2222-1111-1111-111111111111}}\">\n      <Implementation>\n        <ST><![CDATA[{b}]]></ST>\n      </Implementation>\n    </Action>\n")
+        })
+        .collect();
+    std::fs::write(
+        dir.join(format!("{name}.TcPOU")),
+        format!("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"3.1.4024.9\">\n  <POU Name=\"{name}\" Id=\"{{44444444-1111-1111-1111-111111111111}}\" SpecialFunc=\"None\">\n    <Declaration><![CDATA[{decl}]]></Declaration>\n    <Implementation>\n      <ST><![CDATA[{body}]]></ST>\n    </Implementation>\n{actions}  </POU>\n</TcPlcObject>\n"),
+    )
+    .unwrap();
+}
+
+/// A `.plcproj` at `path` compiling `objects`, with `extra` inside its root element.
+fn plcproj(path: &Path, objects: &[&str], extra: &str) {
+    let items: String = objects
+        .iter()
+        .map(|o| format!("    <Compile Include=\"{o}\"><SubType>Code</SubType></Compile>\n"))
+        .collect();
+    std::fs::write(
+        path,
+        format!("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<Project DefaultTargets=\"Build\" xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\n  <PropertyGroup>\n    <Name>{}</Name>\n  </PropertyGroup>\n  <ItemGroup>\n{items}  </ItemGroup>\n{extra}</Project>\n", path.file_stem().unwrap().to_string_lossy()),
+    )
+    .unwrap();
+}
+
+/// `ladderc <args>` in `dir`: (exit code, stdout, stderr).
+fn in_dir(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
+    let out = ladderc()
+        .current_dir(dir)
+        .args(["--message-format", "short"])
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// An encrypted `.plcproj`, and an encrypted object inside a readable project: one E1049 each at
+/// its start, nothing of its bytes read.
+#[test]
+fn an_encrypted_twincat_file_is_one_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let cipher: &[u8] =
+        b"TcEncryptedFile~\x9e\x27\x7f\xcbzv\xbd\xe9\x06\x14\x81\xe9\xef\x809\x8f\xca\x82;\n(*";
+    std::fs::write(dir.path().join("Enc.plcproj"), cipher).unwrap();
+    let (code, _, stderr) = in_dir(dir.path(), &["check", "Enc.plcproj"]);
+    assert_eq!(code, Some(1), "{stderr}");
+    assert_eq!(
+        stderr.trim_end(),
+        "Enc.plcproj:1:1: error[E1049]: an encrypted TwinCAT file: ladderc cannot read it (hint: save the project without encryption in TwinCAT (or export its POUs as PLCopen XML) and give ladderc those files)"
+    );
+    std::fs::create_dir(dir.path().join("PLC")).unwrap();
+    plcproj(
+        &dir.path().join("PLC/PLC.plcproj"),
+        &["MAIN.TcPOU", "FB_Secret.TcPOU"],
+        "",
+    );
+    tcpou(
+        &dir.path().join("PLC"),
+        "MAIN",
+        "PROGRAM MAIN\nVAR\n\tn : INT;\nEND_VAR",
+        "n := n + 1;",
+        &[],
+    );
+    std::fs::write(dir.path().join("PLC/FB_Secret.TcPOU"), cipher).unwrap();
+    let (code, _, stderr) = in_dir(dir.path(), &["check", "PLC/PLC.plcproj"]);
+    assert_eq!(code, Some(1), "{stderr}");
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(lines.len(), 1, "{stderr}");
+    assert!(
+        lines[0].starts_with("PLC/FB_Secret.TcPOU:1:1: error[E1049]"),
+        "{stderr}"
+    );
+}
+
+/// `<PlaceholderReference Include="[MyLib]">` names the library `MyLib`: `--lib` gives it, and its
+/// block runs.
+#[test]
+fn a_placeholder_in_brackets_names_its_library() {
+    let dir = tempfile::tempdir().unwrap();
+    let (app, lib) = (dir.path().join("App"), dir.path().join("MyLib"));
+    std::fs::create_dir(&app).unwrap();
+    std::fs::create_dir(&lib).unwrap();
+    plcproj(
+        &app.join("App.plcproj"),
+        &["MAIN.TcPOU"],
+        "  <ItemGroup>\n    <PlaceholderReference Include=\"[MyLib]\">\n      <DefaultResolution>[MyLib], * (Someone)</DefaultResolution>\n    </PlaceholderReference>\n  </ItemGroup>\n",
+    );
+    tcpou(
+        &app,
+        "MAIN",
+        "PROGRAM MAIN\nVAR\n\tc : FB_Inc;\n\tk : INT;\nEND_VAR",
+        "c(n => k);",
+        &[],
+    );
+    plcproj(&lib.join("MyLib.plcproj"), &["FB_Inc.TcPOU"], "");
+    tcpou(
+        &lib,
+        "FB_Inc",
+        "FUNCTION_BLOCK FB_Inc\nVAR_OUTPUT\n\tn : INT;\nEND_VAR",
+        "n := n + 1;",
+        &[],
+    );
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "App/App.plcproj",
+            "--lib",
+            "MyLib/MyLib.plcproj",
+            "--cycles",
+            "3",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(
+        stdout,
+        "cycle,time_ms,MAIN.c.n,MAIN.k\n0,0,1,1\n1,10,2,2\n2,20,3,3\n"
+    );
+}
+
+/// `fb : FB_Count();` of a block without FB_init: an instance like any other.
+#[test]
+fn an_empty_fb_init_list_is_an_instance() {
+    let src = "FUNCTION_BLOCK FB_Count\nVAR_OUTPUT n : INT; END_VAR\nn := n + 1;\nEND_FUNCTION_BLOCK\nPROGRAM Main\nVAR\n  fb : FB_Count();\nEND_VAR\nfb();\nEND_PROGRAM\n";
+    let (trace, stderr) = run_text("empty.st", src, 2, "Main.fb.n");
+    assert_eq!(
+        trace, "cycle,time_ms,Main.fb.n\n0,0,1\n1,10,2\n",
+        "{stderr}"
+    );
+    // arguments for a block without FB_init stay an error
+    let (code, lines) = check_text("args.st", &src.replace("FB_Count();", "FB_Count(5);"));
+    assert_eq!(code, Some(1));
+    assert!(lines[0].contains("error[E0329]"), "{lines:?}");
+}
+
+/// A call that mixes positional and named arguments of an unknown function, or of a method of an
+/// instance of an unknown block: the unknown name is the one error.
+#[test]
+fn an_unknown_callee_with_mixed_arguments_is_named() {
+    let (code, lines) = check_text(
+        "fn.st",
+        "PROGRAM Main\nVAR\n  hr : DINT;\n  n : UDINT;\nEND_VAR\nhr := F_Unknown(hr, nOut => n);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("fn.st:6:7: error[E1019]: unknown function `F_Unknown`"),
+        "{lines:?}"
+    );
+    let (code, lines) = check_text(
+        "fb.st",
+        "PROGRAM Main\nVAR\n  fbReq : FB_Missing;\n  s : STRING;\nEND_VAR\nIF fbReq.Send(sUri := s, 0) THEN\n  s := 'x';\nEND_IF\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("fb.st:3:11: error[E1003]: unknown type `FB_Missing`"),
+        "{lines:?}"
+    );
+    // a known function still mixes them as TwinCAT does (W1422)
+    let (trace, stderr) = run_text(
+        "known.st",
+        "FUNCTION F_Known : DINT\nVAR_INPUT a : DINT; END_VAR\nVAR_OUTPUT nOut : UDINT; END_VAR\nnOut := 7; F_Known := a + 1;\nEND_FUNCTION\nPROGRAM Main\nVAR\n  hr : DINT;\n  n : UDINT;\nEND_VAR\nhr := F_Known(hr, nOut => n);\nEND_PROGRAM\n",
+        2,
+        "Main.hr,Main.n",
+    );
+    assert_eq!(trace, "cycle,time_ms,Main.hr,Main.n\n0,0,1,7\n1,10,2,7\n");
+    assert!(stderr.contains("warning[W1422]"), "{stderr}");
+}
+
+/// `END_VAR;` in a TwinCAT object and in an `.st` file: the `;` skipped (W0017), the blocks after
+/// it declarations, the program runs.
+#[test]
+fn a_semicolon_after_end_var_is_skipped() {
+    let dir = tempfile::tempdir().unwrap();
+    tcpou(
+        dir.path(),
+        "FB_A",
+        "FUNCTION_BLOCK FB_A\nVAR\n\tn : INT;\nEND_VAR;\nVAR_INPUT\n\tbIn : BOOL;\nEND_VAR\nVAR_OUTPUT\n\tnOut : INT;\nEND_VAR",
+        "IF bIn THEN n := n + 1; END_IF\nnOut := n;",
+        &[],
+    );
+    tcpou(
+        dir.path(),
+        "MAIN",
+        "PROGRAM MAIN\nVAR\n\tfb : FB_A;\n\tk : INT;\nEND_VAR",
+        "fb(bIn := TRUE, nOut => k);",
+        &[],
+    );
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "FB_A.TcPOU",
+            "MAIN.TcPOU",
+            "--cycles",
+            "2",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(
+        stdout,
+        "cycle,time_ms,MAIN.fb.n,MAIN.fb.bIn,MAIN.fb.nOut,MAIN.k\n0,0,1,1,1,1\n1,10,2,1,2,2\n"
+    );
+    assert_eq!(
+        stderr.lines().next().unwrap(),
+        "FB_A.TcPOU:7:8: warning[W0017]: a `;` after END_VAR: skipped (hint: IEC 61131-3 ends a block of declarations with END_VAR alone; delete the `;` (another IEC compiler refuses it))"
+    );
+    let (trace, _) = run_text(
+        "a.st",
+        "PROGRAM Main\nVAR\n  n : INT;\nEND_VAR;\nVAR\n  m : INT := 5;\nEND_VAR;\nn := n + m;\nEND_PROGRAM\n",
+        2,
+        "Main.n",
+    );
+    assert_eq!(trace, "cycle,time_ms,Main.n\n0,0,5\n1,10,10\n");
+}
+
+/// An assignment continued on lines that start with `OR` (IL's operator, here ST's) is ST, also
+/// with a comment between; an empty ST body of a block whose action does the work is ST.
+#[test]
+fn st_continuation_lines_and_an_empty_body_are_st() {
+    let src = "PROGRAM Main\nVAR\n  a, b, c, d, q : BOOL;\nEND_VAR\nq :=\t   a\n\t\tOR b //note\n\t\tOR c\n\t\tOR d;\nEND_PROGRAM\n";
+    for (name, set) in [("or.st", "Main.c"), ("or.txt", "Main.d")] {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join(name), src).unwrap();
+        std::fs::write(dir.path().join("in.stim"), format!("1,{set},TRUE\n")).unwrap();
+        let (code, stdout, stderr) = in_dir(
+            dir.path(),
+            &[
+                "run",
+                name,
+                "--cycles",
+                "2",
+                "--stimulus",
+                "in.stim",
+                "--watch",
+                "Main.q",
+                "--trace",
+                "-",
+            ],
+        );
+        assert_eq!(code, Some(0), "{stderr}");
+        assert_eq!(stdout, "cycle,time_ms,Main.q\n0,0,0\n1,10,1\n", "{name}");
+        assert!(!stderr.contains("instruction list"), "{stderr}");
+    }
+    let dir = tempfile::tempdir().unwrap();
+    tcpou(
+        dir.path(),
+        "FB_Fifo",
+        "FUNCTION_BLOCK FB_Fifo\nVAR_OUTPUT\n\tCount : DINT;\nEND_VAR",
+        "",
+        &[("PUSH", "Count := Count + 1;")],
+    );
+    tcpou(
+        dir.path(),
+        "MAIN",
+        "PROGRAM MAIN\nVAR\n\tfifo : FB_Fifo;\n\tn : DINT;\nEND_VAR",
+        "fifo.PUSH();\nn := fifo.Count;",
+        &[],
+    );
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "FB_Fifo.TcPOU",
+            "MAIN.TcPOU",
+            "--cycles",
+            "3",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(
+        stdout,
+        "cycle,time_ms,MAIN.fifo.Count,MAIN.n\n0,0,1,1\n1,10,2,2\n2,20,3,3\n"
     );
 }

@@ -408,6 +408,20 @@ impl Session {
                 .text
                 .strip_prefix('\u{feff}')
                 .unwrap_or(&decoded.text);
+            // a TwinCAT-encrypted object (`TcEncryptedFile~` then cipher text): one error, unread
+            if text_after_bom.starts_with("TcEncryptedFile") {
+                let file = self.map.add_file_owned(shown, String::new());
+                self.diags.push(
+                    Diagnostic::error(
+                        code::E1049,
+                        "an encrypted TwinCAT file: ladderc cannot read it",
+                    )
+                    .at(diagnostics::Span::new(file, 0, 0))
+                    .with_primary_label("`TcEncryptedFile~` and cipher text")
+                    .with_hint("save the project without encryption in TwinCAT (or export its POUs as PLCopen XML) and give ladderc those files"),
+                );
+                continue;
+            }
             let (file_lang, detected) = if stdin {
                 (
                     lang.unwrap_or_else(|| il_frontend::st::file::detect(text_after_bom)),

@@ -42,13 +42,17 @@ pub fn references(text: &str) -> Vec<Reference> {
     let Some(root) = root else {
         return Vec::new();
     };
-    let title = |s: &str| {
-        s.split(',')
-            .next()
-            .unwrap_or("")
+    // `Include="[Resi4MPM]"`, `<DefaultResolution>[Resi4MPM], * (...)`: a placeholder's name is
+    // written in brackets by some TwinCAT versions
+    let bare = |s: &str| {
+        let s = s.split(',').next().unwrap_or("").trim();
+        s.strip_prefix('[')
+            .and_then(|t| t.strip_suffix(']'))
+            .unwrap_or(s)
             .trim()
-            .to_ascii_uppercase()
+            .to_string()
     };
+    let title = |s: &str| bare(s).to_ascii_uppercase();
     let mut out = Vec::new();
     for el in root.walk() {
         if !matches!(el.name(), "PlaceholderReference" | "LibraryReference") {
@@ -70,19 +74,12 @@ pub fn references(text: &str) -> Vec<Reference> {
             }
         }
         names.retain(|n| !n.is_empty());
-        let Some(first) = names.first().cloned() else {
+        if names.is_empty() {
             continue;
-        };
+        }
         let namespace = child("Namespace")
             .filter(|n| !n.is_empty())
-            .unwrap_or_else(|| {
-                include
-                    .split(',')
-                    .next()
-                    .unwrap_or(&first)
-                    .trim()
-                    .to_string()
-            });
+            .unwrap_or_else(|| bare(include));
         let qualified_only = child("QualifiedOnly").is_some_and(|q| q.eq_ignore_ascii_case("true"));
         out.push(Reference {
             names,

@@ -806,6 +806,15 @@ impl Gen<'_, '_> {
                 let block = self.types.blocks.get(&t.key()).cloned().unwrap_or_default();
                 let given = match args {
                     Some(_) if block.fb_init.is_none() && !(self.reportable)(&t.name) => Vec::new(),
+                    // `fb : FB_Count();` (TwinCAT accepts the empty list of a block without
+                    // FB_init: nothing to pass)
+                    Some(a)
+                        if block.fb_init.is_none()
+                            && a.args.is_empty()
+                            && a.elements.is_empty() =>
+                    {
+                        Vec::new()
+                    }
                     Some(a) if block.fb_init.is_none() => {
                         self.diags.push(unplaced(
                             a,

@@ -687,6 +687,34 @@ pub(super) fn read_var_blocks(
     }
 }
 
+/// The text with each `;` right after an `END_VAR` blanked, one W0017 at each; `None` when it has
+/// none.
+fn end_var_semicolons(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+) -> Option<String> {
+    let mut text: Option<String> = None;
+    for (k, t) in toks.iter().enumerate().skip(1) {
+        if t.tok != Tok::Semi || !is_word(src, &toks[k - 1], "END_VAR") {
+            continue;
+        }
+        diags.push(
+            Diagnostic::new(
+                code::W0017,
+                Severity::Warning,
+                "a `;` after END_VAR: skipped",
+            )
+            .at(Span::new(file, t.range.start, t.range.end))
+            .with_primary_label("ends no declaration")
+            .with_hint("IEC 61131-3 ends a block of declarations with END_VAR alone; delete the `;` (another IEC compiler refuses it)"),
+        );
+        blank(text.get_or_insert_with(|| src.to_string()), t.range.clone());
+    }
+    text
+}
+
 /// Skips the `VAR ... END_VAR` blocks that start at `h`: the position after them, and the end of
 /// the last closed one's `END_VAR` (`None` when no block starts there, or none is closed).
 pub(super) fn skip_var_blocks(src: &str, toks: &[Token], mut h: usize) -> (usize, Option<usize>) {
@@ -796,6 +824,10 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
     let mut il = 0usize;
     let mut depth = 0i32;
     let mut line_start = true;
+    // an ST assignment not yet ended by its `;`: a line after it that starts with an IL operator
+    // continues its expression (`q := a` then `OR b` then `OR c;`); IL writes `:=` only inside
+    // the parentheses of a call
+    let mut open_assignment = false;
     for (k, t) in toks.iter().enumerate() {
         let next = toks.get(k + 1);
         let next_same_line = next.filter(|nt| {
@@ -836,7 +868,7 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                     let operand = next_same_line.is_none_or(|nt| {
                         !matches!(nt.tok, Tok::Assign | Tok::LBracket | Tok::Dot | Tok::Caret)
                     });
-                    if operand && !line_end_semi && !closes_earlier {
+                    if operand && !line_end_semi && !closes_earlier && !open_assignment {
                         il += 1;
                     }
                 }
@@ -851,15 +883,20 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
         match t.tok {
             Tok::LParen | Tok::LBracket => depth += 1,
             Tok::RParen | Tok::RBracket => depth -= 1,
-            Tok::Assign if depth <= 0 => st += 1,
+            Tok::Assign if depth <= 0 => {
+                st += 1;
+                open_assignment = true;
+            }
+            Tok::Semi => open_assignment = false,
             // ST-only words wherever they are (one-line POUs: `... END_VAR RETURN; END_FUNCTION`).
             Tok::Kw(Kw::Return | Kw::Exit | Kw::Continue) => st += 1,
             _ => {}
         }
         line_start = next_same_line.is_none();
     }
-    // no statement and no instruction either (`a AND NOT b;`): a `;` is ST's, IL has none
-    if st > il || (il == 0 && toks.iter().any(|t| t.tok == Tok::Semi)) {
+    // no statement and no instruction either (`a AND NOT b;`): a `;` is ST's, IL has none; an
+    // empty body (`<ST><![CDATA[]]></ST>` of a TwinCAT block whose actions do the work) is ST
+    if st > il || (il == 0 && toks.iter().any(|t| t.tok == Tok::Semi)) || toks.is_empty() {
         Lang::St
     } else {
         Lang::Il
@@ -948,6 +985,7 @@ pub fn parse_text(
         }
     }
     let (unqualified, unreferenced, unlisted, uninitialised, conditioned, unimported, untasked);
+    let unsemicoloned: String;
     // `{IF defined (X)}` ... `{END_IF}`: the sections not compiled blanked (`conditional`)
     let src = match super::conditional::conditional_sections(file, src, &problems, diags) {
         Some(t) => {
@@ -982,6 +1020,15 @@ pub fn parse_text(
                 }
                 None => src,
             };
+        // `END_VAR;`: the `;` blanked (W0017), so the blocks after it stay declarations
+        let src = match end_var_semicolons(file, src, &toks, diags) {
+            Some(t) => {
+                unsemicoloned = t;
+                (toks, problems) = lex(&unsemicoloned);
+                unsemicoloned.as_str()
+            }
+            None => src,
+        };
         let (blanked, refs) = RefTypes::blank_keywords(file, src, &toks);
         references = refs;
         let src = match blanked {

@@ -103,6 +103,9 @@ pub struct PouLowering<'d> {
     reference_to: bool,
     /// Whether W1422 (positional then formal arguments) was reported for this POU.
     mixed_args_reported: bool,
+    /// Set while the arguments of a call whose callee is not known are lowered: their mix of
+    /// formal and non-formal arguments is no E3106 (the callee's own error says what is wrong).
+    unknown_callee: bool,
     /// Set while a call statement's function call is lowered: its value is not used (a FUNCTION
     /// without result type may stand there, nowhere else: E0354).
     result_dropped: bool,
@@ -244,6 +247,7 @@ impl<'d> PouLowering<'d> {
             nested: 0,
             raw_refs: false,
             mixed_args_reported: false,
+            unknown_callee: false,
             result_dropped: false,
             per_call_refs: Default::default(),
             per_call_target: false,
@@ -1500,6 +1504,7 @@ impl<'d> PouLowering<'d> {
             .is_none()
             .then(|| self.method_called(callee))
             .flatten();
+        self.unknown_callee = fb_ty.is_none() && method.is_none();
         let args = self.call_args(
             args,
             |env, name, k| match (&fb_ty, &method) {
@@ -1536,10 +1541,17 @@ impl<'d> PouLowering<'d> {
         out: &mut Vec<IlStmt>,
         diags: &mut Diagnostics,
     ) -> CallArgs {
+        let unknown_callee = std::mem::take(&mut self.unknown_callee);
         if args.is_empty() {
             return CallArgs::None;
         }
         let formal = args.iter().any(|a| a.name.is_some());
+        if formal && args.iter().any(|a| a.name.is_none()) && unknown_callee {
+            // `F_Unknown(hr, nOut => n)`, `fbMissing.Send(sUri := s, 0)`: the named arguments
+            // only; the unknown function or type is the one error (E1019, E1003)
+            let named: Vec<Arg> = args.iter().filter(|a| a.name.is_some()).cloned().collect();
+            return self.call_args(&named, param_ty, out, diags);
+        }
         if formal && args.iter().any(|a| a.name.is_none()) {
             let bad = args
                 .iter()
@@ -2696,6 +2708,8 @@ impl<'d> PouLowering<'d> {
             _ => {
                 let all: Vec<&Arg> = args.iter().collect();
                 let callee2 = self.resolve_callee(name);
+                self.unknown_callee =
+                    matches!(callee2, Callee::Other) && self.decls.pou(&name.name).is_none();
                 let args = match self.call_args(
                     args,
                     |env, n, k| hint_of(env, &callee2, k, Some(n), &all),
