@@ -20,7 +20,10 @@
 //!   35 errors);
 //! - an ST assignment continued on lines that start with `OR` (`q := a` / `OR b` / `OR c;`) is ST
 //!   (before: the body read as IL); an empty `<ST>` body of a block whose actions do the work is ST
-//!   (before: E0304 about an ACTIONS block the user never wrote).
+//!   (before: E0304 about an ACTIONS block the user never wrote);
+//! - B&R Automation Studio's layout: a `.var` file of bare `VAR` blocks declares global variables
+//!   (W0018; before: W0001 and E1001 at every use, gary909's VS4 example), `PROGRAM _INIT` runs
+//!   once before the first cycle and `_EXIT` never (before: both every cycle, with `_CYCLIC`).
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -473,4 +476,63 @@ fn st_continuation_lines_and_an_empty_body_are_st() {
         stdout,
         "cycle,time_ms,MAIN.fifo.Count,MAIN.n\n0,0,1,1\n1,10,2,2\n2,20,3,3\n"
     );
+}
+
+/// B&R: `Variables.var` (bare VAR blocks, one CONSTANT) given with `Main.st` (`_INIT`, `_CYCLIC`,
+/// `_EXIT`): the variables are globals, `_INIT` sets the counter once, `_CYCLIC` counts each cycle,
+/// `_EXIT` does not run.
+#[test]
+fn br_variables_files_and_init_cyclic_exit_programs() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("Variables.var"),
+        "VAR\n\tBtnStart : BOOL;\n\tCount : INT;\n\tExited : BOOL;\nEND_VAR\nVAR CONSTANT\n\tSTEP : INT := 2;\nEND_VAR\n",
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("Main.st"),
+        "PROGRAM _INIT\n\tCount := 100;\nEND_PROGRAM\n\nPROGRAM _CYCLIC\n\tCount := Count + STEP;\nEND_PROGRAM\n\nPROGRAM _EXIT\n\tExited := TRUE;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "Variables.var",
+            "Main.st",
+            "--lang",
+            "st",
+            "--cycles",
+            "3",
+            "--sanitize",
+            "--watch",
+            "Variables.Count,Variables.Exited",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    // (a file of global variables is a list named after the file, as a CODESYS GVL file)
+    assert_eq!(
+        stdout,
+        "cycle,time_ms,Variables.Count,Variables.Exited\n0,0,102,0\n1,10,104,0\n2,20,106,0\n"
+    );
+    assert!(
+        stderr.starts_with(
+            "Variables.var:1:1: note[W0018]: a VAR block outside any POU: read as global variables"
+        ),
+        "{stderr}"
+    );
+    // a STEP written in the program is refused: the CONSTANT block stays constant
+    std::fs::write(
+        dir.path().join("Main.st"),
+        "PROGRAM _CYCLIC\n\tSTEP := 3;\nEND_PROGRAM\n",
+    )
+    .unwrap();
+    let (code, _, stderr) = in_dir(
+        dir.path(),
+        &["check", "Variables.var", "Main.st", "--lang", "st"],
+    );
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(stderr.contains("Main.st:2:2: error["), "{stderr}");
 }

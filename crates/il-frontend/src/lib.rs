@@ -33,8 +33,8 @@ pub mod type_sizes;
 
 pub use diagnostics::{FileId, Span};
 
-use ast::{CompilationUnit, Ident, IlStmt, LibraryElement, Pou, PouKind};
-use diagnostics::Diagnostics;
+use ast::{CompilationUnit, Ident, IlStmt, LibraryElement, Pou, PouKind, VarKind};
+use diagnostics::{code, Diagnostic, Diagnostics, Severity};
 use lexer::Tok;
 use parser::Parsed;
 
@@ -60,6 +60,31 @@ pub fn parse_named(
     else {
         return CompilationUnit::default();
     };
+    // only `VAR` blocks outside the POUs, no instruction (a B&R Automation Studio `.var` file):
+    // global variables (W0018), not an implicit program that runs nothing
+    if let Some((at, vars, _)) = top.implicit.take_if(|(_, vars, body)| {
+        body.is_empty()
+            && vars
+                .iter()
+                .all(|b| b.kind == VarKind::Local && b.name.is_none())
+    }) {
+        let first = vars.first().map_or(Span::new(file, 0, 0), |b| b.span);
+        diags.push(
+            Diagnostic::new(
+                code::W0018,
+                Severity::Note,
+                "a VAR block outside any POU: read as global variables",
+            )
+            .at(Span::new(file, first.start as usize, first.start as usize + 3))
+            .with_hint("as B&R Automation Studio's `.var` files declare them; for another IEC compiler write VAR_GLOBAL"),
+        );
+        let globals = vars.into_iter().map(|mut b| {
+            b.kind = VarKind::Global;
+            LibraryElement::GlobalVars(b)
+        });
+        let at = at.min(top.items.len());
+        top.items.splice(at..at, globals);
+    }
     if let Some((at, vars, body)) = top.implicit.take() {
         let implicit_name = &implicit_program_name(implicit_name);
         let first = top.first_bare.unwrap_or(Span::new(file, 0, 0));

@@ -29,6 +29,12 @@ fn is_init_program(name: &str) -> bool {
     name.eq_ignore_ascii_case(il_frontend::st::fb_init::PROGRAM)
 }
 
+/// Whether `name` is a B&R Automation Studio program part that is no cyclic program: `_INIT`
+/// (run once, before the first cycle) or `_EXIT` (run when the program stops: never in a run).
+fn is_br_once_program(name: &str) -> bool {
+    name.eq_ignore_ascii_case("_INIT") || name.eq_ignore_ascii_case("_EXIT")
+}
+
 /// A program instance to run.
 pub(super) struct Instance {
     /// C variable name.
@@ -50,7 +56,10 @@ impl Gen<'_> {
         let mut v = Vec::new();
         if self.model.configurations.is_empty() {
             for (i, p) in self.model.pous.iter().enumerate() {
-                if p.kind == PouKind::Program && !is_init_program(&p.name) {
+                if p.kind == PouKind::Program
+                    && !is_init_program(&p.name)
+                    && !is_br_once_program(&p.name)
+                {
                     v.push(Instance {
                         c_name: mangle::implicit_instance(&p.name),
                         watch_name: p.name.clone(),
@@ -176,6 +185,25 @@ impl Gen<'_> {
             let _ = writeln!(
                 c,
                 "        {s}_INIT(&{name});
+        {s}_BODY(&{name});
+    }}"
+            );
+        }
+        // B&R Automation Studio: `PROGRAM _INIT` runs once, after the instances are initialised
+        // and before the first cycle (`_CYCLIC` runs each cycle, `_EXIT` at a stop a run never has)
+        if let Some(k) = self.model.pous.iter().position(|p| {
+            p.kind == PouKind::Program
+                && p.name.eq_ignore_ascii_case("_INIT")
+                && self.model.configurations.is_empty()
+        }) {
+            let id = PouId(k as u32);
+            let s = self.instance_struct(id);
+            let name = mangle::implicit_instance(&self.model.pou(id).name);
+            let _ = writeln!(
+                c,
+                "    {{
+        static {s} {name};
+        {s}_INIT(&{name});
         {s}_BODY(&{name});
     }}"
             );
