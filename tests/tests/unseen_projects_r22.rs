@@ -23,7 +23,15 @@
 //!   (before: E0304 about an ACTIONS block the user never wrote);
 //! - B&R Automation Studio's layout: a `.var` file of bare `VAR` blocks declares global variables
 //!   (W0018; before: W0001 and E1001 at every use, gary909's VS4 example), `PROGRAM _INIT` runs
-//!   once before the first cycle and `_EXIT` never (before: both every cycle, with `_CYCLIC`).
+//!   once before the first cycle and `_EXIT` never (before: both every cycle, with `_CYCLIC`);
+//! - `TOD#10:43:47.260_001`, `DT#1985-05-15-11:30:51.240_001_020`: `_` between digits of a date
+//!   and time (IEC 61131-3's `integer`; before: E0104 at `_001`);
+//! - an integer literal index outside an array's bounds is E1050 where it is written (before:
+//!   accepted, "array index out of range" at run time);
+//! - edition 3's `NAMESPACE Lib ... END_NAMESPACE` with `USING Lib;` and `Lib.Twice(3)` (before:
+//!   W0001, E0007 and E1032 naming the file's own namespace a library);
+//! - a VAR_ACCESS path to an array element (`Values[2]`, `inst.State.Samples[3]`, `Grid[1, 2]`;
+//!   IEC 61131-3 6.8.2; before: E0308 "cannot be read").
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -535,4 +543,124 @@ fn br_variables_files_and_init_cyclic_exit_programs() {
     );
     assert_eq!(code, Some(1), "{stderr}");
     assert!(stderr.contains("Main.st:2:2: error["), "{stderr}");
+}
+
+/// `_` between the digits of TOD and DT literals: the same instants as without.
+#[test]
+fn date_and_time_literals_take_digit_separators() {
+    let src = "PROGRAM main\nVAR\n    t : TIME_OF_DAY;\n    d : DATE_AND_TIME;\n    same : BOOL;\nEND_VAR\n    t := TOD#10:43:47.260_001;\n    d := DT#1985-05-15-11:30:51.240_001_020;\n    same := t = TOD#10:43:47.260001 AND d = DT#1985-05-15-11:30:51.24000102;\nEND_PROGRAM\n";
+    let (trace, stderr) = run_text("dt.st", src, 1, "main.t,main.d,main.same");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.t,main.d,main.same\n0,0,TOD#10:43:47.260001,DT#1985-05-15-11:30:51.24000102,1\n",
+        "{stderr}"
+    );
+}
+
+/// A literal index outside the bounds, in a store and a read, of one and two dimensions: E1050 at
+/// the index; inside the bounds, and a computed index, no error.
+#[test]
+fn a_literal_index_outside_the_bounds_is_an_error() {
+    let src = "PROGRAM main\nVAR\n    temps : ARRAY[1..10] OF REAL;\n    m : ARRAY[0..1, -2..2] OF INT;\n    x : REAL;\n    i : INT := 11;\nEND_VAR\n    temps[11] := 10.0;\n    x := temps[0];\n    m[1, -3] := 1;\n    temps[10] := temps[1];\n    m[0, -2] := 2;\nEND_PROGRAM\n";
+    let (code, lines) = check_text("oob.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        [
+            "oob.st:8:11: error[E1050]: index 11 is outside the bounds 1..10 of `temps` (hint: index with a value from 1 to 10, or declare the array with bounds that hold 11)",
+            "oob.st:9:16: error[E1050]: index 0 is outside the bounds 1..10 of `temps` (hint: index with a value from 1 to 10, or declare the array with bounds that hold 0)",
+            "oob.st:10:10: error[E1050]: index -3 is outside the bounds -2..2 of `m` (hint: index with a value from -2 to 2, or declare the array with bounds that hold -3)",
+        ]
+    );
+}
+
+/// A function inside `NAMESPACE Lib ... END_NAMESPACE`, imported with `USING Lib;` and called
+/// qualified and plain.
+#[test]
+fn a_namespace_declares_its_pous() {
+    let src = "NAMESPACE Lib\n  FUNCTION Twice : INT\n    VAR_INPUT v : INT; END_VAR\n    Twice := v * 2;\n  END_FUNCTION\nEND_NAMESPACE\n\nUSING Lib;\n\nPROGRAM main\n  VAR r, s : INT; END_VAR\n  r := Lib.Twice(3);\n  s := Twice(r);\nEND_PROGRAM\n";
+    let (trace, stderr) = run_text("ns.st", src, 1, "main.r,main.s");
+    assert_eq!(trace, "cycle,time_ms,main.r,main.s\n0,0,6,12\n", "{stderr}");
+    assert!(!stderr.contains("warning"), "{stderr}");
+}
+
+/// VAR_ACCESS paths to elements: of a global array (written by a stimulus, READ_WRITE), of an
+/// array in a program's structure (READ_ONLY), of a two-dimensional one through the resource; a
+/// subscript outside the bounds is E0308 at the entry.
+#[test]
+fn an_access_path_may_name_an_array_element() {
+    let src = "TYPE
+  Samples : ARRAY [1..3] OF INT;
+  ST_State : STRUCT
+    Samples : ARRAY [1..3] OF INT;
+    Grid : ARRAY [0..1, 1..2] OF INT;
+  END_STRUCT;
+END_TYPE
+
+PROGRAM P
+  VAR_EXTERNAL
+    Values : Samples;
+  END_VAR
+  VAR
+    State : ST_State;
+  END_VAR
+  State.Samples[3] := State.Samples[3] + 2;
+  State.Grid[1, 2] := Values[2] * 10;
+END_PROGRAM
+
+CONFIGURATION Cfg
+  VAR_GLOBAL
+    Values : Samples;
+  END_VAR
+  RESOURCE Res ON PLC
+    TASK t(INTERVAL := T#10ms, PRIORITY := 0);
+    PROGRAM inst WITH t : P;
+  END_RESOURCE
+  VAR_ACCESS
+    Second : Values[2] : INT READ_WRITE;
+    Third : inst.State.Samples[3] : INT READ_ONLY;
+    Cell : Res.inst.State.Grid[1, 2] : INT;
+  END_VAR
+END_CONFIGURATION
+";
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("acc.st"), src).unwrap();
+    std::fs::write(dir.path().join("in.stim"), "1,Second,4\n").unwrap();
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "acc.st",
+            "--cycles",
+            "3",
+            "--stimulus",
+            "in.stim",
+            "--sanitize",
+            "--watch",
+            "Second,Third,Cell",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(
+        stdout,
+        "cycle,time_ms,Second,Third,Cell\n0,0,0,2,0\n1,10,4,4,40\n2,20,4,6,40\n"
+    );
+    // READ_ONLY: a stimulus cannot write it
+    std::fs::write(dir.path().join("ro.stim"), "1,Third,9\n").unwrap();
+    let (code, _, stderr) = in_dir(
+        dir.path(),
+        &["run", "acc.st", "--cycles", "2", "--stimulus", "ro.stim"],
+    );
+    assert_ne!(code, Some(0), "{stderr}");
+    let (code, lines) = check_text(
+        "bad.st",
+        &src.replace("Samples[3] : INT READ_ONLY", "Samples[4] : INT READ_ONLY"),
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        ["bad.st:30:5: error[E0308]: access path `Third`: subscript 4 is outside the bounds 1..3 of `Samples` (hint: name a variable of a program instance of this configuration (`resource.program.variable`), a global or a direct address, with its declared type)"]
+    );
 }

@@ -1100,6 +1100,10 @@ pub struct AccessDecl {
     pub name: Ident,
     /// The path's names, the resource's included when written (`res.prog.x` or `prog.x` or `g`).
     pub path: Vec<Ident>,
+    /// Constant subscripts of the path's names (`Values[2]`, `prog.State.Samples[3]`): (the
+    /// name's position in `path`, its subscripts, where they are written), in order.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub subscripts: Vec<(usize, Vec<i128>, Span)>,
     /// The direct address of a path to one (`res.%IX1.1`).
     pub address: Option<DirectAddress>,
     /// The declared type's name (a non-generic type).

@@ -398,6 +398,14 @@ enum Fam {
 /// The body of a date/time literal at the start of `rest`: its length and value.
 fn prefixed_body(fam: Fam, long: bool, rest: &str) -> (usize, Result<Option<TimeValue>, LexError>) {
     let bytes = rest.as_bytes();
+    // `_` between two digits (`TOD#10:43:47.260_001`: IEC 61131-3's `integer ::= digit {['_']
+    // digit}` in every number of a date and time)
+    let digit_separator = |i: usize, c: u8| {
+        c == b'_'
+            && i > 0
+            && bytes[i - 1].is_ascii_digit()
+            && bytes.get(i + 1).is_some_and(u8::is_ascii_digit)
+    };
     let allowed = |i: usize, c: u8| match fam {
         Fam::Dur => {
             c.is_ascii_alphanumeric()
@@ -405,9 +413,11 @@ fn prefixed_body(fam: Fam, long: bool, rest: &str) -> (usize, Result<Option<Time
                 || (c == b'.' && bytes.get(i + 1).is_some_and(u8::is_ascii_digit))
                 || (i == 0 && (c == b'-' || c == b'+'))
         }
-        Fam::Date => c.is_ascii_digit() || c == b'-',
-        Fam::Tod => c.is_ascii_digit() || c == b':' || c == b'.',
-        Fam::Dt => c.is_ascii_digit() || c == b'-' || c == b':' || c == b'.',
+        Fam::Date => c.is_ascii_digit() || c == b'-' || digit_separator(i, c),
+        Fam::Tod => c.is_ascii_digit() || c == b':' || c == b'.' || digit_separator(i, c),
+        Fam::Dt => {
+            c.is_ascii_digit() || c == b'-' || c == b':' || c == b'.' || digit_separator(i, c)
+        }
     };
     let n = bytes
         .iter()
@@ -415,11 +425,18 @@ fn prefixed_body(fam: Fam, long: bool, rest: &str) -> (usize, Result<Option<Time
         .take_while(|&(i, &c)| allowed(i, c))
         .count();
     let body = &rest[..n];
+    let plain;
+    let dated = if matches!(fam, Fam::Dur) || !body.contains('_') {
+        body
+    } else {
+        plain = body.replace('_', "");
+        plain.as_str()
+    };
     let value = match fam {
         Fam::Dur => literal::duration(body).map(|v| TimeValue::Duration(v, long)),
-        Fam::Date => literal::date(body).map(|v| TimeValue::Date(v, long)),
-        Fam::Tod => literal::time_of_day(body).map(|v| TimeValue::TimeOfDay(v, long)),
-        Fam::Dt => literal::date_and_time(body).map(|v| TimeValue::DateAndTime(v, long)),
+        Fam::Date => literal::date(dated).map(|v| TimeValue::Date(v, long)),
+        Fam::Tod => literal::time_of_day(dated).map(|v| TimeValue::TimeOfDay(v, long)),
+        Fam::Dt => literal::date_and_time(dated).map(|v| TimeValue::DateAndTime(v, long)),
     };
     (n, value.map(Some).map_err(LexError::BadLiteral))
 }

@@ -1231,6 +1231,7 @@ fn access_variable(ctx: &mut Ctx, v: &Element) -> Option<il_frontend::ast::Acces
     Some(il_frontend::ast::AccessDecl {
         name: Ident::new(alias, ctx.attr_span(v, "alias")),
         path,
+        subscripts: Vec::new(),
         address,
         type_name: Ident::new(type_name, span),
         read_only,

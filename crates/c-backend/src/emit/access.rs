@@ -115,6 +115,8 @@ impl<'a> Gen<'a> {
             self.access_error(a, "the path names no variable".into());
             return false;
         };
+        // position in `a.path` of `path[0]` (for the subscripts written after a name)
+        let skip = a.path.len() - path.len();
         let model = self.model;
         let target = if path.len() == 1 {
             // a global of the configuration (or of the resource named)
@@ -131,7 +133,15 @@ impl<'a> Gen<'a> {
                 in_scope && model.global(r).name.eq_ignore_ascii_case(&first.name)
             });
             match found {
-                Some(r) => Target::Var(model.global(r), self.global_name(r)),
+                Some(r) => {
+                    match self.element(a, skip, Target::Var(model.global(r), self.global_name(r))) {
+                        Ok(t) => t,
+                        Err(why) => {
+                            self.access_error(a, why);
+                            return false;
+                        }
+                    }
+                }
                 None => {
                     self.access_error(
                         a,
@@ -161,9 +171,18 @@ impl<'a> Gen<'a> {
                 );
                 return false;
             };
-            let mut lv = cfmt!("{}.{}", inst.c_name, mangle::var(&v.name));
-            let mut target = Target::Var(v, lv.clone());
-            for member in &path[2..] {
+            let lv = cfmt!("{}.{}", inst.c_name, mangle::var(&v.name));
+            let mut target = match self.element(a, skip + 1, Target::Var(v, lv)) {
+                Ok(t) => t,
+                Err(why) => {
+                    self.access_error(a, why);
+                    return false;
+                }
+            };
+            for (m, member) in path[2..].iter().enumerate() {
+                let mut lv = match &target {
+                    Target::Var(_, lv) | Target::Field(_, lv) => lv.clone(),
+                };
                 let ty = match &target {
                     Target::Var(v, _) => v.ty.clone(),
                     Target::Field(t, _) => t.clone(),
@@ -188,7 +207,13 @@ impl<'a> Gen<'a> {
                     return false;
                 };
                 lv = cfmt!("{lv}.{field}");
-                target = Target::Field(t, lv.clone());
+                target = match self.element(a, skip + 2 + m, Target::Field(t, lv)) {
+                    Ok(t) => t,
+                    Err(why) => {
+                        self.access_error(a, why);
+                        return false;
+                    }
+                };
             }
             target
         };
@@ -212,6 +237,48 @@ impl<'a> Gen<'a> {
             Target::Field(t, lv) => self.watch_value(name, &lv, &t, 0, out),
         }
         true
+    }
+
+    /// `target` indexed by the subscripts written after the path's name at position `k`
+    /// (`Values[2]`): the element, its C place `lv[2 - lower]`; an error when it is no array,
+    /// the count of subscripts is not its dimensions' or one is outside its bounds.
+    fn element<'m>(
+        &self,
+        a: &AccessDecl,
+        k: usize,
+        target: Target<'m>,
+    ) -> Result<Target<'m>, String> {
+        let mut target = target;
+        for (_, values, _) in a.subscripts.iter().filter(|s| s.0 == k) {
+            let (ty, lv) = match &target {
+                Target::Var(v, lv) => (v.ty.clone(), lv.clone()),
+                Target::Field(t, lv) => (t.clone(), lv.clone()),
+            };
+            let Type::Array { dims, element } = &ty else {
+                let t = self.model.type_name(&ty);
+                return Err(format!("`{}` is {t}, not an array", a.path[k].name));
+            };
+            if dims.len() != values.len() {
+                return Err(format!(
+                    "`{}` has {} dimension(s), the path gives {} subscript(s)",
+                    a.path[k].name,
+                    dims.len(),
+                    values.len()
+                ));
+            }
+            let mut place = lv;
+            for (d, v) in dims.iter().zip(values) {
+                if !(d.lower..=d.upper).contains(v) {
+                    return Err(format!(
+                        "subscript {v} is outside the bounds {}..{} of `{}`",
+                        d.lower, d.upper, a.path[k].name
+                    ));
+                }
+                place = cfmt!("{place}[{}]", v - d.lower);
+            }
+            target = Target::Field((**element).clone(), place);
+        }
+        Ok(target)
     }
 
     /// Whether the declared type name `declared` is `ty` (its IEC name, or an alias of it).

@@ -480,8 +480,9 @@ impl Body<'_, '_> {
                             .hint("give one index per dimension: a[i, j]");
                         return Place::error();
                     }
-                    for ix in ixs {
+                    for (ix, d) in ixs.iter().zip(dims.iter()) {
                         self.index_operand(ix);
+                        self.constant_index_in_bounds(ix, d, v, at);
                     }
                     place = Place {
                         ty: element,
@@ -497,6 +498,33 @@ impl Body<'_, '_> {
             }
         }
         place
+    }
+
+    /// E1050 when the index is an integer literal outside the dimension's bounds (IEC 61131-3:
+    /// an error; a computed index is checked at run time).
+    fn constant_index_in_bounds(&mut self, ix: &Operand, d: &Dim, v: &VarRef, at: usize) {
+        let Operand::Literal(l) = ix else { return };
+        let ast::LiteralKind::Int(k) = l.kind else {
+            return;
+        };
+        if (d.lower..=d.upper).contains(&k) {
+            return;
+        }
+        let path = path_text(v, at);
+        self.a
+            .error(
+                code::E1050,
+                l.span,
+                format!(
+                    "index {k} is outside the bounds {}..{} of `{path}`",
+                    d.lower, d.upper
+                ),
+            )
+            .label("outside the array")
+            .hint(format!(
+                "index with a value from {} to {}, or declare the array with bounds that hold {k}",
+                d.lower, d.upper
+            ));
     }
 
     /// Checks one index of an array (or pointer) access: an integer.

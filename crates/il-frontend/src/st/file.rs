@@ -1039,20 +1039,21 @@ pub fn parse_text(
             }
             None => src,
         };
-        let src = match library_qualifiers(file, src, &toks, diags) {
-            Some(t) => {
-                unqualified = t;
-                (toks, problems) = lex(&unqualified);
-                unqualified.as_str()
-            }
-            None => src,
-        };
-        // `USING Siemens.Simatic.S71500.Tasks;`: blanked, one W1421 each (`using`)
+        // `USING Siemens.Simatic.S71500.Tasks;`: blanked, one W1421 each (`using`; before the
+        // qualifiers blank the file's own `NAMESPACE` words, which it reads)
         let src = match super::using::namespace_imports(file, src, &toks, diags) {
             Some(t) => {
                 unimported = t;
                 (toks, problems) = lex(&unimported);
                 unimported.as_str()
+            }
+            None => src,
+        };
+        let src = match library_qualifiers(file, src, &toks, diags) {
+            Some(t) => {
+                unqualified = t;
+                (toks, problems) = lex(&unqualified);
+                unqualified.as_str()
             }
             None => src,
         };

@@ -153,6 +153,53 @@ pub fn offered_names(unit: &crate::ast::CompilationUnit) -> impl Iterator<Item =
     })
 }
 
+/// The names (upper case) of the file's `NAMESPACE Name ... END_NAMESPACE` blocks, whose words
+/// (`NAMESPACE Name`, `NAMESPACE INTERNAL Name`, `END_NAMESPACE` and a `;` after it) are blanked in
+/// `text`. A `NAMESPACE` with no `END_NAMESPACE` after it is left alone (a name of the program).
+fn namespace_blocks(src: &str, toks: &[Token], text: &mut Option<String>) -> Vec<String> {
+    let mut names = Vec::new();
+    let mut open = 0usize;
+    for (k, t) in toks.iter().enumerate() {
+        if is_word(src, t, "NAMESPACE")
+            && toks[k + 1..]
+                .iter()
+                .any(|e| is_word(src, e, "END_NAMESPACE"))
+        {
+            let mut j = k + 1;
+            if toks.get(j).is_some_and(|n| is_word(src, n, "INTERNAL")) {
+                j += 1;
+            }
+            if !toks.get(j).is_some_and(|n| n.tok == Tok::Ident) {
+                continue;
+            }
+            // `NAMESPACE A.B`: the last part qualifies the names inside
+            let mut last = j;
+            while toks.get(last + 1).is_some_and(|d| d.tok == Tok::Dot)
+                && toks.get(last + 2).is_some_and(|n| n.tok == Tok::Ident)
+            {
+                last += 2;
+            }
+            names.push(word(src, &toks[last]).to_ascii_uppercase());
+            blank(
+                text.get_or_insert_with(|| src.to_string()),
+                t.range.start..toks[last].range.end,
+            );
+            open += 1;
+        } else if is_word(src, t, "END_NAMESPACE") && open > 0 {
+            open -= 1;
+            let end = match toks.get(k + 1) {
+                Some(semi) if semi.tok == Tok::Semi => semi.range.end,
+                _ => t.range.end,
+            };
+            blank(
+                text.get_or_insert_with(|| src.to_string()),
+                t.range.start..end,
+            );
+        }
+    }
+    names
+}
+
 /// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
 /// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
 /// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
@@ -187,6 +234,9 @@ pub(super) fn library_qualifiers(
         }
     }
     let mut text: Option<String> = None;
+    // edition 3's `NAMESPACE Lib ... END_NAMESPACE` (6.9): the words blanked, so the POUs and
+    // types inside are the file's, and `Lib.Name` names them as a provided library's name does
+    let namespaces = namespace_blocks(src, toks, &mut text);
     let mut reported = std::collections::HashSet::new();
     let mut in_decl = false;
     for (k, t) in toks.iter().enumerate() {
@@ -220,7 +270,8 @@ pub(super) fn library_qualifiers(
         }
         let text = text.get_or_insert_with(|| src.to_string());
         let member_name = word(src, member).to_ascii_uppercase();
-        let provided = PROVIDED_LIBRARIES.contains(&w.as_str())
+        let provided = namespaces.contains(&w)
+            || PROVIDED_LIBRARIES.contains(&w.as_str())
             || USER_LIBRARIES.with(|u| u.borrow().contains(&w))
             || PARTLY_PROVIDED_LIBRARIES
                 .iter()

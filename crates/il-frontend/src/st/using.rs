@@ -59,6 +59,19 @@ pub(super) fn namespace_imports(
             continue;
         }
         let range = toks[k].range.start..toks[j].range.end;
+        // a namespace this file declares (`NAMESPACE Lib ... END_NAMESPACE`): its names are the
+        // file's, reached plain or `Lib.`-qualified (`qualifiers`): nothing to report
+        let declared = |n: &String| {
+            let last = n.rsplit('.').next().unwrap_or(n);
+            toks.windows(2)
+                .any(|w| is_word(src, &w[0], "NAMESPACE") && is_word(src, &w[1], last))
+        };
+        if names.iter().all(declared) {
+            let text = out.get_or_insert_with(|| src.to_string());
+            text.replace_range(range.clone(), &" ".repeat(range.len()));
+            k = j + 1;
+            continue;
+        }
         diags.push(
             Diagnostic::new(
                 code::W1421,
@@ -79,13 +92,19 @@ pub(super) fn namespace_imports(
     out
 }
 
-/// Whether token `k` begins a declaration or statement: the first token, or after `;`, or after
+/// Whether token `k` begins a declaration or statement: the first token, after `;` or an `END_`
+/// word, or after
 /// a POU header's name (`PROGRAM p USING ns;`).
 fn starts_statement(src: &str, toks: &[Token], k: usize) -> bool {
     if k == 0 {
         return true;
     }
-    if toks[k - 1].tok == Tok::Semi {
+    // (or after the end of a declaration: `END_NAMESPACE USING Lib;`, `END_FUNCTION`)
+    if toks[k - 1].tok == Tok::Semi
+        || word(src, &toks[k - 1])
+            .get(..4)
+            .is_some_and(|w| w.eq_ignore_ascii_case("END_"))
+    {
         return true;
     }
     k >= 2

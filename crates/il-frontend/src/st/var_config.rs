@@ -45,10 +45,44 @@ fn access_entry(
     }
     let mut i = 2;
     let mut path = Vec::new();
+    let mut subscripts = Vec::new();
     let mut address = None;
     while let Some(t) = entry.get(i) {
         match &t.tok {
-            Tok::Ident => path.push(ident(t)),
+            Tok::Ident => {
+                path.push(ident(t));
+                // `Values[2]`, `Samples[1, 3][2]`: constant subscripts of an element (IEC
+                // 61131-3 6.8.2: an access path names a symbolic variable, elements included)
+                while entry.get(i + 1).is_some_and(|b| b.tok == Tok::LBracket) {
+                    let open = entry[i + 1];
+                    let mut values = Vec::new();
+                    let mut j = i + 2;
+                    loop {
+                        let negative = entry.get(j).is_some_and(|m| word(src, m) == "-");
+                        if negative {
+                            j += 1;
+                        }
+                        let Some(Tok::Int(v)) = entry.get(j).map(|n| &n.tok) else {
+                            return Err("an access path's subscripts are integer literals");
+                        };
+                        let v = *v;
+                        values.push(if negative { -v } else { v });
+                        j += 1;
+                        match entry.get(j).map(|n| &n.tok) {
+                            Some(Tok::Comma) => j += 1,
+                            Some(Tok::RBracket) => break,
+                            _ => return Err("an access path's subscripts are integer literals"),
+                        }
+                    }
+                    let close = entry[j];
+                    subscripts.push((
+                        path.len() - 1,
+                        values,
+                        Span::new(file, open.range.start, close.range.end),
+                    ));
+                    i = j;
+                }
+            }
             Tok::Address(area, size, p) if address.is_none() => {
                 address = Some(DirectAddress {
                     area: *area,
@@ -90,6 +124,7 @@ fn access_entry(
     Ok(crate::ast::AccessDecl {
         name: ident(name),
         path,
+        subscripts,
         address,
         type_name: ident(ty),
         read_only,
