@@ -308,7 +308,7 @@ fn memory_functions_on_unknown_objects_are_refused() {
     assert_eq!(
         lines,
         vec![
-            "m.st:4:20: error[E1035]: MEMCPY: the variable this pointer points into cannot be known (hint: pass `ADR(x)` of the variable itself (an element or a field too), or a POINTER TO variable: ladderc bounds the count by the variable the address belongs to)",
+            "m.st:4:20: error[E1035]: MEMCPY: the variable this pointer points into cannot be known (hint: pass `ADR(x)` of the variable itself (an element or a field too), `ADR(x) + n` (n bytes into it), or a POINTER TO variable: ladderc bounds the count by the variable the address belongs to)",
             "m.st:5:1: error[E1035]: `MEMSET` takes three arguments (hint: write `MEMSET(destAddr := ADR(...), fillByte := ..., n := ...)`)",
             "m.st:6:8: error[E1035]: `MEMCPY` has no such argument (hint: write `MEMCPY(destAddr := ADR(...), srcAddr := ..., n := ...)`)",
         ]

@@ -31,7 +31,12 @@
 //! - edition 3's `NAMESPACE Lib ... END_NAMESPACE` with `USING Lib;` and `Lib.Twice(3)` (before:
 //!   W0001, E0007 and E1032 naming the file's own namespace a library);
 //! - a VAR_ACCESS path to an array element (`Values[2]`, `inst.State.Samples[3]`, `Grid[1, 2]`;
-//!   IEC 61131-3 6.8.2; before: E0308 "cannot be read").
+//!   IEC 61131-3 6.8.2; before: E0308 "cannot be read");
+//! - `MEMMOVE(ADR(buf) + n, ...)`, `MEMCPY(..., 2 + ADR(src), ...)`: an address with a byte
+//!   offset into its variable, the count clipped to the bytes after the offset (before: E1035 "the
+//!   variable this pointer points into cannot be known");
+//! - an interface method that a block with an unknown base declares itself is no E0335 (the
+//!   base's E0330 is the one error).
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -662,5 +667,64 @@ END_CONFIGURATION
     assert_eq!(
         lines,
         ["bad.st:30:5: error[E0308]: access path `Third`: subscript 4 is outside the bounds 1..3 of `Samples` (hint: name a variable of a program instance of this configuration (`resource.program.variable`), a global or a direct address, with its declared type)"]
+    );
+}
+
+/// Byte offsets added to `ADR(x)` in the memory functions: the bytes land from the offset on; an
+/// offset past the end writes nothing (the runtime reports the clip), ASan-clean.
+#[test]
+fn a_memory_address_may_carry_a_byte_offset() {
+    let src = "PROGRAM Main
+VAR
+  src : ARRAY [1..6] OF BYTE := [1, 2, 3, 4, 5, 6];
+  dst : ARRAY [0..7] OF BYTE;
+  two : ARRAY [0..1] OF BYTE;
+  nPos : UDINT := 2;
+  big : UDINT := 100;
+END_VAR
+MEMMOVE(ADR(dst) + nPos, ADR(src), 3);
+MEMSET(destAddr := ADR(dst) + 6, fillByte := 16#AA, n := 5);
+MEMCPY(destAddr := ADR(two), srcAddr := 2 + ADR(src), n := 2);
+MEMSET(ADR(src) + big, 0, 4);
+END_PROGRAM
+";
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("mem.st"), src).unwrap();
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run", "mem.st", "--cycles", "1", "--sanitize", "--watch",
+            "Main.dst[1],Main.dst[2],Main.dst[3],Main.dst[4],Main.dst[5],Main.dst[6],Main.dst[7],Main.two[0],Main.two[1],Main.src[6]",
+            "--trace", "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(
+        stdout.lines().nth(1).unwrap(),
+        "0,0,0,1,2,3,0,170,170,3,4,6"
+    );
+    // the MEMSET at 6 clipped to 2 bytes, the one past the end to none: reported at the end
+    assert!(
+        stderr
+            .contains("runtime: memory function count beyond its variables (first: MEMSET in Main"),
+        "{stderr}"
+    );
+    // a subtraction is no offset ladderc can bound
+    let (code, lines) = check_text("sub.st", &src.replace("ADR(dst) + nPos", "ADR(dst) - nPos"));
+    assert_eq!(code, Some(1));
+    assert!(lines[0].contains("error[E1035]"), "{lines:?}");
+}
+
+/// A block whose base is unknown and that declares the interface's method itself: one E0330 (the
+/// base), no E0335 for the method.
+#[test]
+fn an_unknown_base_is_the_one_error_of_an_implementing_block() {
+    let src = "INTERFACE ITF_Observer\nMETHOD Update : BOOL\nVAR_INPUT x : INT; END_VAR\nEND_METHOD\nEND_INTERFACE\n\nFUNCTION_BLOCK FB_Module EXTENDS FB_LibraryBase IMPLEMENTS ITF_Observer\nVAR n : INT; END_VAR\nMETHOD Update : BOOL\nVAR_INPUT x : INT; END_VAR\nn := x;\nUpdate := TRUE;\nEND_METHOD\nEND_FUNCTION_BLOCK\n";
+    let (code, lines) = check_text("impl.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("impl.st:7:34: error[E0330]"),
+        "{lines:?}"
     );
 }

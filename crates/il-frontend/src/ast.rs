@@ -588,12 +588,21 @@ pub struct MemCall {
     /// value is the address: the call works on the bytes from where it points to the end of the
     /// variable it was made from (a bounded reference carries both). False: `ADR(dest)`.
     pub through_pointer: [bool; 2],
+    /// A byte offset added to `ADR(dest)` / `ADR(src)` (`MEMMOVE(ADR(buf) + n, ...)`, a plain
+    /// operand): the call works on the bytes of the variable from that offset on.
+    #[serde(skip_serializing_if = "no_offsets")]
+    pub offsets: [Option<Operand>; 2],
     /// The fill byte (MEMSET) and the byte count, plain operands.
     pub fill: Option<Operand>,
     /// The number of bytes.
     pub count: Operand,
     /// The whole call text.
     pub span: Span,
+}
+
+/// Whether a [`MemCall`] has no offsets (left out of the AST's JSON, as before offsets).
+fn no_offsets(o: &[Option<Operand>; 2]) -> bool {
+    o.iter().all(Option::is_none)
 }
 
 /// The payload of [`Operand::SizeOf`].

@@ -273,11 +273,21 @@ pub fn operand(out: &mut String, o: &Operand) {
             out.push_str(m.func.name());
             out.push_str("(ADR(");
             var_ref(out, &m.dest);
-            out.push_str("), ");
+            out.push(')');
+            if let Some(o) = &m.offsets[0] {
+                out.push_str(" + ");
+                operand(out, o);
+            }
+            out.push_str(", ");
             if let Some(s) = &m.src {
                 out.push_str("ADR(");
                 var_ref(out, s);
-                out.push_str("), ");
+                out.push(')');
+                if let Some(o) = &m.offsets[1] {
+                    out.push_str(" + ");
+                    operand(out, o);
+                }
+                out.push_str(", ");
             }
             if let Some(f) = &m.fill {
                 operand(out, f);

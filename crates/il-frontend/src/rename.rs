@@ -90,6 +90,9 @@ impl Renames {
                 if let Some(f) = &mut m.fill {
                     self.operand(f);
                 }
+                for o in m.offsets.iter_mut().flatten() {
+                    self.operand(o);
+                }
                 self.operand(&mut m.count);
             }
             _ => {}

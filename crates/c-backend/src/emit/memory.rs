@@ -20,6 +20,7 @@ impl Gen<'_> {
     /// The C value of `m` (IEC_UDINT, or IEC_DINT for MEMCMP).
     pub(super) fn memory_call(&mut self, scope: &Scope, m: &MemCall) -> Option<String> {
         let (dst, d_room) = self.mem_object(scope, &m.dest, m.through_pointer[0], m)?;
+        let (dst, d_room) = self.offset(scope, dst, d_room, m.offsets[0].as_ref())?;
         let count = self.value(scope, &m.count, &Type::Elementary(Elementary::Ulint))?;
         let pou = scope
             .pou
@@ -37,6 +38,7 @@ impl Gen<'_> {
             MemFunc::Copy | MemFunc::Move | MemFunc::Compare => {
                 let (src, s_room) =
                     self.mem_object(scope, m.src.as_ref()?, m.through_pointer[1], m)?;
+                let (src, s_room) = self.offset(scope, src, s_room, m.offsets[1].as_ref())?;
                 let f = if m.func == MemFunc::Compare {
                     "ladderc_mem_cmp"
                 } else {
@@ -47,6 +49,28 @@ impl Gen<'_> {
                 ))
             }
         }
+    }
+
+    /// `addr` and `room` moved `offset` bytes on (`ADR(buf) + n`): no room left when the offset
+    /// is at or past the end (a negative one, as an unsigned count, is past it), so the runtime
+    /// clips the count to 0 and reports it; the address is then the variable's own (never
+    /// formed outside it).
+    fn offset(
+        &mut self,
+        scope: &Scope,
+        addr: String,
+        room: String,
+        offset: Option<&il_frontend::ast::Operand>,
+    ) -> Option<(String, String)> {
+        let Some(o) = offset else {
+            return Some((addr, room));
+        };
+        let n = self.value(scope, o, &Type::Elementary(Elementary::Ulint))?;
+        let n = cfmt!("((uint64_t)({n}))");
+        Some((
+            cfmt!("(void *)((char *)({addr}) + ({n} < (uint64_t)({room}) ? {n} : 0))"),
+            cfmt!("({n} < (uint64_t)({room}) ? (size_t)((uint64_t)({room}) - {n}) : (size_t)0)"),
+        ))
     }
 
     /// The address of `v` and its room (see the module documentation); with `through_pointer`, `v`

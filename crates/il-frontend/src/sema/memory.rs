@@ -74,6 +74,7 @@ impl Body<'_, '_> {
         }
         for (o, role) in std::iter::once((&m.count, "byte count"))
             .chain(m.fill.as_ref().map(|f| (f, "fill byte")))
+            .chain(m.offsets.iter().flatten().map(|o| (o, "byte offset")))
         {
             let t = self.read_operand(o);
             let want = if role == "fill byte" {

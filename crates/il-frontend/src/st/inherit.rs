@@ -267,7 +267,9 @@ pub fn flatten(
     // IMPLEMENTS: each interface's methods, with the same signature, in the block or its bases
     for key in &keys {
         let c = &classes[key];
-        if c.oop.implements.is_empty() {
+        // (a block whose EXTENDS chain is broken lost its methods with its body: its error is
+        // the base's, not a missing method of each interface)
+        if c.oop.implements.is_empty() || matches!(chains.get(key), Some(None)) {
             continue;
         }
         let methods: Vec<&PendingMethod> = match c.pending {

@@ -117,6 +117,10 @@ impl PouLowering<'_> {
             dest.as_ref().is_some_and(|d| d.1),
             src.as_ref().is_some_and(|s| s.1),
         ];
+        let offsets = [
+            dest.as_ref().and_then(|d| d.2.clone()),
+            src.as_ref().and_then(|s| s.2.clone()),
+        ];
         let (dest, src) = (dest.map(|d| d.0), src.map(|s| s.0));
         let (Some(dest), true) = (dest, func == MemFunc::Set || src.is_some()) else {
             self.poisoned = true;
@@ -129,6 +133,7 @@ impl PouLowering<'_> {
                 dest,
                 src,
                 through_pointer,
+                offsets,
                 fill,
                 count,
                 span,
@@ -147,7 +152,34 @@ impl PouLowering<'_> {
         e: &Expr,
         out: &mut Vec<il::IlStmt>,
         diags: &mut Diagnostics,
-    ) -> Option<(il::VarRef, bool)> {
+    ) -> Option<(il::VarRef, bool, Option<Operand>)> {
+        // `ADR(buf) + n`, `n + ADR(buf)` (Tc2_System code writes into a buffer from an offset):
+        // the variable, and the offset in bytes (the C clips the count to the bytes after it)
+        if let ExprKind::Binary {
+            op: super::super::ast::BinaryOp::Add,
+            left,
+            right,
+        } = &e.kind
+        {
+            let is_address = |x: &Expr| {
+                matches!(&x.kind, ExprKind::Call { name, args }
+                    if super::super::refs::is_address_of(name)
+                        && matches!(&args[..], [Arg { name: None, value: Expr { kind: ExprKind::Place(_), .. }, .. }]))
+            };
+            let (address, offset) = if is_address(left) {
+                (left, right)
+            } else if is_address(right) {
+                (right, left)
+            } else {
+                (left, left)
+            };
+            if !std::ptr::eq(address, offset) {
+                let (v, _, _) = self.pointed_variable(func, address, out, diags)?;
+                let udint = il::TypeRef::Named(il::Ident::new("UDINT", offset.span));
+                let o = self.operand(offset, Some(&udint), out, diags);
+                return Some((v, false, Some(o)));
+            }
+        }
         if let ExprKind::Place(p) = &e.kind {
             let env = self.env();
             let pointer = matches!(
@@ -159,7 +191,7 @@ impl PouLowering<'_> {
             );
             if pointer {
                 if let Some(Operand::Var(v)) = self.place_operand(p, out, diags) {
-                    return Some((v, true));
+                    return Some((v, true, None));
                 }
                 return None;
             }
@@ -177,7 +209,7 @@ impl PouLowering<'_> {
                 }] = &args[..]
                 {
                     if let Some(Operand::Var(v)) = self.place_operand(p, out, diags) {
-                        return Some((v, false));
+                        return Some((v, false, None));
                     }
                     return None;
                 }
@@ -193,7 +225,7 @@ impl PouLowering<'_> {
             )
             .at(e.span)
             .with_primary_label("not `ADR(variable)` or a pointer variable")
-            .with_hint("pass `ADR(x)` of the variable itself (an element or a field too), or a POINTER TO variable: ladderc bounds the count by the variable the address belongs to"),
+            .with_hint("pass `ADR(x)` of the variable itself (an element or a field too), `ADR(x) + n` (n bytes into it), or a POINTER TO variable: ladderc bounds the count by the variable the address belongs to"),
         );
         None
     }
