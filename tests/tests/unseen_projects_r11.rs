@@ -231,7 +231,7 @@ fn a_file_cut_off_in_a_condition_is_not_reported_twice_at_its_last_word() {
         heads,
         [
             "cut.st:6:7: error[E0100]: expected `)`, found name `AN`",
-            "cut.st:6:9: error[E0105]: IF is not closed: expected `END_IF`, found end of text",
+            "cut.st:6:9: error[E0105]: IF is not closed: expected `END_IF`, found the end of the body",
             "cut.st:6:9: warning[W0014]: `p` ends at the end of the file without `END_PROGRAM`: read as if it were there",
         ]
     );
@@ -241,7 +241,7 @@ fn a_file_cut_off_in_a_condition_is_not_reported_twice_at_its_last_word() {
     );
     assert_eq!(
         heads[0],
-        "tail.st:4:4: error[E0106]: expected `:=` or `(` after `foo`, found end of text"
+        "tail.st:4:4: error[E0106]: expected `:=` or `(` after `foo`, found the end of the body"
     );
 }
 

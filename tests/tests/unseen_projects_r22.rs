@@ -36,7 +36,12 @@
 //!   offset into its variable, the count clipped to the bytes after the offset (before: E1035 "the
 //!   variable this pointer points into cannot be known");
 //! - an interface method that a block with an unknown base declares itself is no E0335 (the
-//!   base's E0330 is the one error).
+//!   base's E0330 is the one error);
+//! - a loose enumeration (no `{attribute 'strict'}`) stored into a bit string that holds its values
+//!   (`d : DWORD := eFlags`) and beside one in AND/OR (`nFlags AND E_State.eA`, Infosys SA0058's
+//!   example; before: E1006, E1005);
+//! - a missing `;` at the end of a body says "found the end of the body" (before: "end of
+//!   text").
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -726,5 +731,53 @@ fn an_unknown_base_is_the_one_error_of_an_implementing_block() {
     assert!(
         lines[0].starts_with("impl.st:7:34: error[E0330]"),
         "{lines:?}"
+    );
+}
+
+/// A flags enumeration with a DWORD base type, without `{attribute 'strict'}`: stored into a
+/// DWORD and a WORD that hold its values, ANDed with a DWORD; a strict one stays refused.
+#[test]
+fn a_loose_enumeration_meets_bit_strings_through_its_number() {
+    let src =
+        "TYPE E_Flags : (eNone := 0, eA := 16#1, eB := 16#2, eAll := eA OR eB) DWORD; END_TYPE
+PROGRAM Main
+VAR
+  f : E_Flags := E_Flags.eAll;
+  d : DWORD;
+  w : WORD;
+  i : INT;
+END_VAR
+d := f;
+w := E_Flags.eB;
+IF (d AND E_Flags.eA) <> 0 THEN i := i + 10; END_IF
+IF (w OR E_Flags.eA) = 3 THEN i := i + 1; END_IF
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("flags.st", src, 1, "Main.d,Main.w,Main.i");
+    assert_eq!(
+        trace, "cycle,time_ms,Main.d,Main.w,Main.i\n0,0,3,2,11\n",
+        "{stderr}"
+    );
+    assert!(stderr.contains("warning[W1439]"), "{stderr}");
+    let strict = format!("{{attribute 'strict'}}\n{src}");
+    let (code, lines) = check_text("strict.st", &strict);
+    assert_eq!(code, Some(1));
+    assert!(
+        lines[0].contains("error[E1006]: cannot store E_Flags into DWORD"),
+        "{lines:?}"
+    );
+}
+
+/// A statement without `;` before END_PROGRAM: the error names the end of the body.
+#[test]
+fn a_missing_semicolon_at_the_end_names_the_body() {
+    let (code, lines) = check_text(
+        "semi.st",
+        "PROGRAM A\nVAR\n    x : INT;\nEND_VAR\n    x := 1\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        ["semi.st:5:11: error[E0104]: missing `;` after the statement (found the end of the body) (hint: every ST statement ends with `;` (also `END_IF;`, `END_FOR;` ...))"]
     );
 }

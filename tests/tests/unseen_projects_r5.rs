@@ -465,7 +465,7 @@ fn a_too_deep_expression_is_not_followed_by_one_error_per_level() {
         "{lines:?}"
     );
     assert!(
-        lines[1].contains("error[E0100]: expected `)`, found end of text"),
+        lines[1].contains("error[E0100]: expected `)`, found the end of the body"),
         "{lines:?}"
     );
     let ifs = format!(

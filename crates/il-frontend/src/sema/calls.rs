@@ -147,20 +147,30 @@ impl Body<'_, '_> {
         // CODESYS, TwinCAT: an enumeration without {attribute 'strict'} beside an integer (or an
         // integer literal) counts as its number: an INT, CODESYS's base type, or a DINT where a
         // value does not fit INT (W1439)
+        // (beside a bit string, as that bit string: `nFlags AND E_State.eA`, `d = eFlags` of a
+        // DWORD `d`)
+        let bit_string = known
+            .iter()
+            .filter_map(|k| k.0.elementary())
+            .filter(|e| e.is_bit() && *e != Elementary::Bool)
+            .max_by_key(|e| e.size_bytes());
         if matches!(
             class,
-            Class::Any | Class::AnyElementary | Class::AnyNum | Class::AnyInt
+            Class::Any | Class::AnyElementary | Class::AnyNum | Class::AnyInt | Class::AnyBit
         ) && known
             .iter()
             .any(|k| super::loose_enum::is_loose(&self.a.model, &k.0))
             && (known.iter().any(|k| k.0.is_integer())
+                || bit_string.is_some()
                 || lit_args.iter().any(|(v, _)| !self.lits.is_real(*v)))
         {
             let mut first = None;
             for (t, span) in known.iter_mut() {
                 if super::loose_enum::is_loose(&self.a.model, t) {
                     first.get_or_insert((t.clone(), *span));
-                    *t = super::loose_enum::number_type(&self.a.model, t);
+                    *t = bit_string
+                        .and_then(|b| super::loose_enum::bit_string_type(&self.a.model, t, b))
+                        .unwrap_or_else(|| super::loose_enum::number_type(&self.a.model, t));
                 }
             }
             if let Some((t, span)) = first {

@@ -48,12 +48,39 @@ pub(super) fn number_type(model: &Model, t: &Type) -> Type {
     }
 }
 
+/// The values a bit string `t` holds as an unsigned number (BYTE 0..255 ... LWORD); `None` for
+/// BOOL and every other type.
+fn bit_string_range(t: Elementary) -> Option<(i128, i128)> {
+    let bits = match t {
+        Elementary::Byte => 8,
+        Elementary::Word => 16,
+        Elementary::Dword => 32,
+        Elementary::Lword => 64,
+        _ => return None,
+    };
+    Some((0, (1i128 << bits) - 1))
+}
+
+/// The bit string a loose enumeration `t` counts as beside the bit string `other` (`nFlags AND
+/// E_State.eUnknown` of a DWORD: Infosys, SA0058's example): `other`, when it holds every value.
+pub(super) fn bit_string_type(model: &Model, t: &Type, other: Elementary) -> Option<Type> {
+    let (lo, hi) = bit_string_range(other)?;
+    loose_values(model, t)?
+        .iter()
+        .all(|(_, v)| lo <= *v && *v <= hi)
+        .then_some(Type::Elementary(other))
+}
+
 /// Whether a value of `from` may be stored into `to` through an enumeration's number: a loose
-/// enumeration into an integer that holds all its values, an integer that widens to DINT into a
-/// loose enumeration.
+/// enumeration into an integer or a bit string that holds all its values (`d : DWORD := eFlags`),
+/// an integer that widens to DINT into a loose enumeration.
 pub(super) fn assignable_loose(model: &Model, from: &Type, to: &Type) -> bool {
     if let (Some(values), Some(t)) = (loose_values(model, from), to.elementary()) {
-        if let (true, Some((lo, hi))) = (t.is_integer(), t.int_range()) {
+        let range = match (t.is_integer(), t.int_range()) {
+            (true, Some(r)) => Some(r),
+            _ => bit_string_range(t),
+        };
+        if let Some((lo, hi)) = range {
             return values.iter().all(|(_, v)| lo <= *v && *v <= hi);
         }
     }

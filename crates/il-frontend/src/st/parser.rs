@@ -55,6 +55,9 @@ pub fn statements_in(
     let mut local = Diagnostics::new();
     let mut p = Parser::new(file, src, base, &mut local);
     p.this_dot = this_dot;
+    // a statement list ends where its POU's, method's or action's body ends (`END_PROGRAM`, the
+    // end of a TwinCAT `<ST>` element): "found the end of the body" (not "of text")
+    p.eof_text = "the end of the body";
     let mut list = p.statement_list();
     while !p.at(&Tok::Eof) {
         // A stray block keyword at the top level (`END_IF` without `IF` ...).
@@ -147,6 +150,9 @@ struct Parser<'s, 'd> {
     try_noted: bool,
     /// `THIS.x` is `THIS^.x` (edition 3's spelling; see [`statements_in`]).
     this_dot: bool,
+    /// How the end of the text is described in "found ..." (`end of text`; in a body, `the end of
+    /// the body`).
+    eof_text: &'static str,
     /// The last error reported (code, span): the same error at the same place again (an unclosed
     /// `(` or IF per level after E0108 "nested too deeply") is not repeated.
     last_error: Option<(Code, Span)>,
@@ -191,6 +197,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             short_circuit_noted: false,
             try_noted: false,
             this_dot: false,
+            eof_text: "end of text",
             last_error: None,
             diags,
         };
@@ -319,7 +326,7 @@ impl<'s, 'd> Parser<'s, 'd> {
     fn describe_current(&self) -> String {
         let t = self.cur();
         match &t.tok {
-            Tok::Eof => "end of text".into(),
+            Tok::Eof => self.eof_text.into(),
             // `Lib.Name` of a library ladderc does not provide reaches the parser as `__b_Name`
             // (`super::qualifiers`, E1032): no identifier can be written so
             Tok::Ident if self.text(t).starts_with("__") => "a library-qualified name".into(),
