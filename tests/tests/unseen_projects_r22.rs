@@ -41,7 +41,10 @@
 //!   (`d : DWORD := eFlags`) and beside one in AND/OR (`nFlags AND E_State.eA`, Infosys SA0058's
 //!   example; before: E1006, E1005);
 //! - a missing `;` at the end of a body says "found the end of the body" (before: "end of
-//!   text").
+//!   text");
+//! - an enumerated value inside an operation of a constant's initial value (`N : INT :=
+//!   E_Idx.Last + 1`; before: E0022 "`Last` is not a constant"), and `SIZEOF(STRING(255))` (before:
+//!   E1034).
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -779,5 +782,31 @@ fn a_missing_semicolon_at_the_end_names_the_body() {
     assert_eq!(
         lines,
         ["semi.st:5:11: error[E0104]: missing `;` after the statement (found the end of the body) (hint: every ST statement ends with `;` (also `END_IF;`, `END_FOR;` ...))"]
+    );
+}
+
+/// `E_Idx.Last + 1` as a constant's value, `E_Idx.Last` as a bound, `SIZEOF(STRING(255))` and
+/// `SIZEOF(WSTRING(10))` as the sizes of such variables.
+#[test]
+fn enumerated_values_in_constants_and_sizeof_of_a_string_type() {
+    let src = "TYPE E_Idx : (First := 0, Second, Last); END_TYPE
+PROGRAM Main
+VAR CONSTANT
+  N : INT := E_Idx.Last + 1;
+END_VAR
+VAR
+  arr : ARRAY [0..E_Idx.Last] OF INT;
+  s : STRING(255);
+  w : WSTRING(10);
+  same : BOOL;
+END_VAR
+arr[2] := N;
+same := SIZEOF(STRING(255)) = SIZEOF(s) AND SIZEOF(WSTRING(10)) = SIZEOF(w) AND SIZEOF(s) > 255;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("k.st", src, 1, "Main.N,Main.arr[2],Main.same");
+    assert_eq!(
+        trace, "cycle,time_ms,Main.N,Main.arr[2],Main.same\n0,0,3,3,1\n",
+        "{stderr}"
     );
 }

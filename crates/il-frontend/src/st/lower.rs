@@ -2555,6 +2555,35 @@ impl<'d> PouLowering<'d> {
                     return;
                 }
             }
+            // `SIZEOF(STRING(255))`: the type STRING of that length; every STRING (WSTRING) of
+            // ladderc has one size whatever its length (README, memory model)
+            if let [Arg {
+                name: None,
+                value:
+                    Expr {
+                        kind:
+                            ExprKind::Call {
+                                name: ty,
+                                args: len,
+                            },
+                        ..
+                    },
+                ..
+            }] = args
+            {
+                if (ty.is("STRING") || ty.is("WSTRING")) && len.len() == 1 {
+                    let of = il::VarRef {
+                        base: ty.clone(),
+                        accessors: Default::default(),
+                        span: ty.span,
+                    };
+                    out.push(ld(
+                        Operand::SizeOf(Box::new(il::SizeOfOperand { of, span })),
+                        span,
+                    ));
+                    return;
+                }
+            }
             diags.push(
                 Diagnostic::error(code::E1034, "`SIZEOF` takes one variable or one type name")
                     .at(span)
