@@ -44,7 +44,10 @@
 //!   text");
 //! - an enumerated value inside an operation of a constant's initial value (`N : INT :=
 //!   E_Idx.Last + 1`; before: E0022 "`Last` is not a constant"), and `SIZEOF(STRING(255))` (before:
-//!   E1034).
+//!   E1034);
+//! - a structure field declared `AT %I*` (TwinCAT DUTs and their PLCopen XML exports) is a plain
+//!   field of each instance (W0322; before: `check` passed and `run` failed with E9002, a C field
+//!   missing); one at a fixed address is E1055.
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -808,5 +811,63 @@ END_PROGRAM
     assert_eq!(
         trace, "cycle,time_ms,Main.N,Main.arr[2],Main.same\n0,0,3,3,1\n",
         "{stderr}"
+    );
+}
+
+/// `pushed AT %I* : BOOL;` in a STRUCT: a plain field of each instance, set by a stimulus through
+/// its path and read by the program; a fixed address in a structure type is E1055.
+#[test]
+fn a_placeholder_located_structure_field_is_a_plain_field() {
+    let src = "TYPE PBInput :
+STRUCT
+    pushed AT %I* : BOOL;
+    count : INT;
+END_STRUCT
+END_TYPE
+
+PROGRAM MAIN
+VAR
+    inp, other : PBInput;
+    lamp : BOOL;
+END_VAR
+inp.count := inp.count + 1;
+lamp := inp.pushed AND NOT other.pushed;
+END_PROGRAM
+";
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("pb.st"), src).unwrap();
+    std::fs::write(dir.path().join("in.stim"), "1,MAIN.inp.pushed,TRUE\n").unwrap();
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "pb.st",
+            "--cycles",
+            "3",
+            "--sanitize",
+            "--stimulus",
+            "in.stim",
+            "--watch",
+            "MAIN.inp.pushed,MAIN.other.pushed,MAIN.lamp",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(
+        stdout,
+        "cycle,time_ms,MAIN.inp.pushed,MAIN.other.pushed,MAIN.lamp\n0,0,0,0,0\n1,10,1,0,1\n2,20,1,0,1\n"
+    );
+    assert!(
+        stderr.contains("pb.st:3:15: note[W0322]: 1 field(s) of `PBInput`"),
+        "{stderr}"
+    );
+    let (code, lines) = check_text("fixed.st", &src.replace("AT %I*", "AT %IX0.0"));
+    assert_eq!(code, Some(1));
+    assert!(
+        lines[0].starts_with(
+            "fixed.st:3:15: error[E1055]: the field `pushed` of `PBInput` is at a fixed address"
+        ),
+        "{lines:?}"
     );
 }

@@ -12,7 +12,7 @@ use crate::ast::{
     self, CompilationUnit, Initializer, LibraryElement, Operand, TypeRef, VarBlock, VarKind,
 };
 use crate::Span;
-use diagnostics::code;
+use diagnostics::{code, Diagnostic, Severity};
 use std::collections::HashMap;
 
 /// Constants visible to an initial value: upper-case name -> (type, value).
@@ -144,7 +144,7 @@ impl Analyzer<'_> {
                                 kind: VarKind::Local,
                                 constant: false,
                                 retain: false,
-                                vars: fields.clone(),
+                                vars: self.unlocated_fields(&d.name.name, fields),
                                 span: d.span,
                             }];
                             let vars = self.declare_vars(&blocks, &Consts::new(), None);
@@ -841,6 +841,49 @@ impl Analyzer<'_> {
     /// type (or array element type) is not BOOL: the bit cannot hold the value (ZPLC's HIL tests
     /// declare `a AT %Q0.0 : INT`; before, the value was silently cut to one bit).
     /// `%Q*` (not yet located, no size letter: the VAR_CONFIG or the tool places it) takes any type.
+    /// The fields of structure `name` without their locations: a placeholder `AT %I*` (TwinCAT's
+    /// DUTs, linked by the I/O configuration) makes a plain field of each instance (W0322, once per
+    /// type); a fixed address is E1055 (every instance would share it), the field read as plain.
+    fn unlocated_fields(&mut self, name: &str, fields: &[ast::VarDecl]) -> Vec<ast::VarDecl> {
+        let mut out = fields.to_vec();
+        let mut placeholders: Vec<Span> = Vec::new();
+        for f in &mut out {
+            let Some(loc) = f.location.take() else {
+                continue;
+            };
+            if loc.path.is_empty() {
+                placeholders.push(loc.span);
+                continue;
+            }
+            self.error(
+                code::E1055,
+                loc.span,
+                format!(
+                    "the field `{}` of `{name}` is at a fixed address: every instance would share it",
+                    f.name.name
+                ),
+            )
+            .label("fixed address in a structure type")
+            .hint("declare the located variable outside the structure and copy it into the field, or write the placeholder `AT %I*`");
+        }
+        if let (Some(&first), false) = (placeholders.first(), self.silent) {
+            self.diags.push(
+                Diagnostic::new(
+                    code::W0322,
+                    Severity::Note,
+                    format!(
+                        "{} field(s) of `{name}` declared `AT %I*`/`%Q*`/`%M*`: read as plain fields of each instance",
+                        placeholders.len()
+                    ),
+                )
+                .at(first)
+                .with_primary_label("placeholder address")
+                .with_hint("TwinCAT links such fields in its I/O configuration; set them with --stimulus by their path, read them with --watch"),
+            );
+        }
+        out
+    }
+
     fn check_bit_location(&mut self, d: &ast::VarDecl, loc: &ast::DirectAddress, ty: &Type) {
         if loc.size != ast::AddressSize::Bit || loc.path.is_empty() {
             return;
