@@ -47,7 +47,10 @@
 //!   E1034);
 //! - a structure field declared `AT %I*` (TwinCAT DUTs and their PLCopen XML exports) is a plain
 //!   field of each instance (W0322; before: `check` passed and `run` failed with E9002, a C field
-//!   missing); one at a fixed address is E1055.
+//!   missing); one at a fixed address is E1055;
+//! - MC_GearIn without Acceleration / Deceleration couples with the slave axis's configured
+//!   limits (Infosys MC_GearInDyn, TF5200 MC_GearIn; before: E4023 twice), as the other blocks'
+//!   left-out accelerations already were.
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -870,4 +873,63 @@ END_PROGRAM
         ),
         "{lines:?}"
     );
+}
+
+/// MC_GearIn called without Acceleration and Deceleration: coupled with the slave's configured
+/// limits (no E4023); the slave follows at the ratio 1:2, never faster than its limits (which
+/// hold half the master's: ErrorID 34 otherwise, README "Gearing").
+#[test]
+fn gear_in_without_accelerations_uses_the_slaves_limits() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("gear.axes.json"),
+        r#"{ "cycle_ms": 10.0, "axes": [
+    { "name": "X1", "unit": "mm", "velocity": 100, "acceleration": 1000, "deceleration": 1000, "jerk": 0 },
+    { "name": "X2", "unit": "mm", "velocity": 100, "acceleration": 800, "deceleration": 800, "jerk": 0 } ] }"#,
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("gear.st"),
+        "PROGRAM MAIN
+VAR
+    pw1 : MC_Power; pw2 : MC_Power;
+    mv : MC_MoveAbsolute;
+    gi : MC_GearIn;
+END_VAR
+pw1(Axis := X1, Enable := TRUE);
+pw2(Axis := X2, Enable := TRUE);
+gi(Master := X1, Slave := X2, Execute := pw2.Status, RatioNumerator := 1, RatioDenominator := 2);
+mv(Axis := X1, Execute := gi.InGear, Position := 100.0, Velocity := 50.0, Acceleration := 500.0, Deceleration := 500.0);
+END_PROGRAM
+",
+    )
+    .unwrap();
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "gear.st",
+            "--cycles",
+            "300",
+            "--watch",
+            "axis.X1.position,axis.X2.position,axis.X2.acceleration,MAIN.gi.InGear,MAIN.mv.Done",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(!stderr.contains("E4023"), "{stderr}");
+    let x1 = column(&stdout, "axis.X1.position");
+    let x2 = column(&stdout, "axis.X2.position");
+    let a2 = column(&stdout, "axis.X2.acceleration");
+    let done = column(&stdout, "MAIN.mv.Done");
+    assert_eq!(done[299], 1.0, "{stdout}");
+    assert!(
+        (x1[299] - 100.0).abs() < 1e-9 && (x2[299] - 50.0).abs() < 1e-6,
+        "{stdout}"
+    );
+    for k in 0..300 {
+        assert!((x2[k] - x1[k] / 2.0).abs() < 1e-6, "cycle {k}: {stdout}");
+        assert!(a2[k].abs() <= 800.0 + 1e-9, "cycle {k}: {stdout}");
+    }
 }

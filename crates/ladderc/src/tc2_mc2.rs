@@ -435,9 +435,12 @@ fn axis_defaults(block: &str, list: &mut Vec<FormalArg>, at: il_frontend::Span, 
     if cx.axes.axes.is_empty() {
         return;
     }
+    // (the coupled axis of MC_GearIn and its kin: the slave's dynamics, Infosys MC_GearInDyn
+    // "the standard acceleration from the axis configuration")
     let axis = list
         .iter()
         .find(|a| a.name.key() == "AXIS")
+        .or_else(|| list.iter().find(|a| a.name.key() == "SLAVE"))
         .and_then(|a| match &a.value {
             Operand::Var(v) => Some(v.clone()),
             _ => None,
