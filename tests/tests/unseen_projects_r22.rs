@@ -50,7 +50,11 @@
 //!   missing); one at a fixed address is E1055;
 //! - MC_GearIn without Acceleration / Deceleration couples with the slave axis's configured
 //!   limits (Infosys MC_GearInDyn, TF5200 MC_GearIn; before: E4023 twice), as the other blocks'
-//!   left-out accelerations already were.
+//!   left-out accelerations already were;
+//! - PLCopen XML files given together: an array bound names a constant of another file's global
+//!   list (`upper="G.numAxis"`; before: E3401 and follow-up errors, SPNSPN's per-object export);
+//!   an XML POU given with text inputs uses their data types (before: E3009 "not defined in this
+//!   project").
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -932,4 +936,66 @@ END_PROGRAM
         assert!((x2[k] - x1[k] / 2.0).abs() < 1e-6, "cycle {k}: {stdout}");
         assert!(a2[k].abs() <= 800.0 + 1e-9, "cycle {k}: {stdout}");
     }
+}
+
+/// The header of a PLCopen XML file (CODESYS / TwinCAT export) around `types` and `add_data`.
+fn plcopen(types: &str, add_data: &str) -> String {
+    format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<project xmlns=\"http://www.plcopen.org/xml/tc6_0200\">\n  <fileHeader companyName=\"Beckhoff Automation GmbH\" productName=\"TwinCAT PLC Control\" productVersion=\"3.5.13.21\" creationDateTime=\"2024-02-17T22:43:25\" />\n  <contentHeader name=\"PLC\"><coordinateInfo><fbd><scaling x=\"1\" y=\"1\" /></fbd><ld><scaling x=\"1\" y=\"1\" /></ld><sfc><scaling x=\"1\" y=\"1\" /></sfc></coordinateInfo></contentHeader>\n  <types><dataTypes />{types}</types>\n  <instances><configurations /></instances>\n{add_data}</project>\n"
+    )
+}
+
+/// A per-object export: the constant list `G` in one file, `ARRAY[0..G.numAxis]` in another; and
+/// an XML program whose variable's type is declared in an `.st` file given with it.
+#[test]
+fn xml_files_see_other_inputs_constants_and_types() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("G.xml"),
+        plcopen(
+            "<pous />",
+            "  <addData>\n    <data name=\"http://www.3s-software.com/plcopenxml/globalvars\" handleUnknown=\"implementation\">\n      <globalVars name=\"G\" constant=\"true\">\n        <variable name=\"numAxis\"><type><LINT /></type><initialValue><simpleValue value=\"3\" /></initialValue></variable>\n      </globalVars>\n    </data>\n  </addData>\n",
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("MAIN.xml"),
+        plcopen(
+            "<pous>\n    <pou name=\"MAIN\" pouType=\"program\">\n      <interface><localVars>\n        <variable name=\"a\"><type><array><dimension lower=\"0\" upper=\"G.numAxis\" /><baseType><INT /></baseType></array></type></variable>\n        <variable name=\"n\"><type><LINT /></type></variable>\n        <variable name=\"p\"><type><derived name=\"P3\" /></type></variable>\n      </localVars></interface>\n      <body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">a[G.numAxis] := 7; n := G.numAxis; p.x := 2.5;</xhtml></ST></body>\n    </pou>\n  </pous>",
+            "",
+        ),
+    )
+    .unwrap();
+    std::fs::write(
+        dir.path().join("types.st"),
+        "TYPE P3 : STRUCT x : REAL; y : REAL; END_STRUCT; END_TYPE\n",
+    )
+    .unwrap();
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "G.xml",
+            "MAIN.xml",
+            "types.st",
+            "--cycles",
+            "1",
+            "--watch",
+            "MAIN.a[3],MAIN.n,MAIN.p.x",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(
+        stdout,
+        "cycle,time_ms,MAIN.a[3],MAIN.n,MAIN.p.x\n0,0,7,3,2.5\n"
+    );
+    // without the file of the type: E3009 names it
+    let (code, _, stderr) = in_dir(dir.path(), &["check", "G.xml", "MAIN.xml"]);
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("error[E3009]: type `P3` is not defined in this project"),
+        "{stderr}"
+    );
 }

@@ -123,6 +123,9 @@ pub struct OtherFiles {
     pub pous: Vec<PouSig>,
     /// The data types.
     pub types: Vec<TypeDecl>,
+    /// The integer constants of the constant global lists (`N`, and `GVL.N` of a named list),
+    /// upper case: array bounds of the other files may name them.
+    pub constants: HashMap<String, i128>,
 }
 
 thread_local! {
@@ -165,7 +168,11 @@ pub fn interfaces(file: diagnostics::FileId, xml: &str) -> OtherFiles {
         .filter_map(|p| pou_header(&mut ctx, p))
         .map(|h| signature(&h))
         .collect();
-    OtherFiles { pous, types }
+    OtherFiles {
+        pous,
+        types,
+        constants: ctx.constants.clone(),
+    }
 }
 
 /// Reads the `<project>` root: data types, POUs (bodies lowered to IL) and configurations, in that order; a
@@ -199,8 +206,17 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     }
     let _version = version(ctx, root);
     vendor_data(ctx, root);
-    // integer constants for array bounds: every constant global list of the file, vendor GVLs too
+    // integer constants for array bounds: every constant global list of the file, vendor GVLs too,
+    // then those of the other files given with it (a per-object export: `ARRAY[1..G.numAxis]` of
+    // a list in another file)
     ctx.constants = decls::collect_constants(root, true, &|_| None);
+    OTHER_FILES.with(|o| {
+        if let Some(other) = o.borrow().as_ref() {
+            for (k, v) in &other.constants {
+                ctx.constants.entry(k.clone()).or_insert(*v);
+            }
+        }
+    });
 
     let apps = application_resources(root);
     let (mut data_types, pou_els) = types_and_pous(ctx, root, single_pou);
@@ -1005,7 +1021,9 @@ fn xml_property(
     il_frontend::st::property::accessor_methods(&ident, &ty, get, set)
 }
 
-fn signature(p: &Pou) -> PouSig {
+/// The interface of a POU read from any input (its pins, internals and result), as other PLCopen
+/// XML files given with it see it ([`OtherFiles`]).
+pub fn signature(p: &Pou) -> PouSig {
     let is_pin = |k: VarKind| matches!(k, VarKind::Input | VarKind::Output | VarKind::InOut);
     // Both lists sized once (a 10,000-rung program has 32,500 internals: growing the list by doubling
     // copied it into fresh pages five times).

@@ -318,12 +318,18 @@ impl Session {
             }
         }
         let programs_before = il_frontend::st::qualifiers::set_project_programs(programs);
-        // several PLCopen XML files (CODESYS exports one object per file): compiled once all are
-        // read, each knowing the POUs and data types of the others
+        // several PLCopen XML files (CODESYS exports one object per file), or XML beside text
+        // inputs (a TwinCAT project's `.TcDUT` types of an imported PLCopen POU): compiled once
+        // all are read, each knowing the POUs and data types of the others
         let xml_inputs = paths
             .iter()
             .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")))
             .count();
+        let xml_inputs = if xml_inputs > 0 && paths.len() > 1 {
+            paths.len()
+        } else {
+            xml_inputs
+        };
         let mut deferred_xml: Vec<(usize, diagnostics::FileId, Option<PathBuf>)> = Vec::new();
         for p in &paths {
             // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals
@@ -738,11 +744,37 @@ impl Session {
             .iter()
             .map(|(_, f, _)| ladder_compiler::project::interfaces(*f, &self.map.get(*f).text))
             .collect();
+        // the text inputs' POUs and data types (`.st`, TwinCAT objects: a TwinCAT project that
+        // imported one POU as PLCopen XML keeps its types in `.TcDUT` files)
+        let xml_slots: std::collections::HashSet<usize> = files.iter().map(|f| f.0).collect();
+        let mut text = ladder_compiler::project::OtherFiles::default();
+        for (_, u) in units
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| !xml_slots.contains(k))
+        {
+            for item in &u.items {
+                match item {
+                    il_frontend::ast::LibraryElement::Pou(p) => {
+                        text.pous.push(ladder_compiler::project::signature(p))
+                    }
+                    il_frontend::ast::LibraryElement::DataTypes(ts) => {
+                        text.types.extend(ts.iter().cloned())
+                    }
+                    _ => {}
+                }
+            }
+        }
         for (i, (k, file, dir)) in files.into_iter().enumerate() {
             let mut other = ladder_compiler::project::OtherFiles::default();
+            other.pous.extend(text.pous.iter().cloned());
+            other.types.extend(text.types.iter().cloned());
             for (_, o) in interfaces.iter().enumerate().filter(|(j, _)| *j != i) {
                 other.pous.extend(o.pous.iter().cloned());
                 other.types.extend(o.types.iter().cloned());
+                for (k, v) in &o.constants {
+                    other.constants.entry(k.clone()).or_insert(*v);
+                }
             }
             let src = &self.map.get(file).text;
             let diags = &mut self.diags;
