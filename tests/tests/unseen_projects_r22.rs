@@ -54,7 +54,9 @@
 //! - PLCopen XML files given together: an array bound names a constant of another file's global
 //!   list (`upper="G.numAxis"`; before: E3401 and follow-up errors, SPNSPN's per-object export);
 //!   an XML POU given with text inputs uses their data types (before: E3009 "not defined in this
-//!   project").
+//!   project");
+//! - B&R's library blocks: a FUNCTION_BLOCK (or FUNCTION) declared in a `.fun` file and
+//!   implemented in a `.st` file are one block (W0019; before: E1002 "declared twice").
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -996,6 +998,75 @@ fn xml_files_see_other_inputs_constants_and_types() {
     assert_eq!(code, Some(1), "{stderr}");
     assert!(
         stderr.contains("error[E3009]: type `P3` is not defined in this project"),
+        "{stderr}"
+    );
+}
+
+/// B&R: `Lib.fun` declares a block and a function, `Counter.st` / `Half.st` implement them (the
+/// statements only): one block and one function, run from `_CYCLIC`; two full declarations stay
+/// E1002.
+#[test]
+fn br_blocks_declared_in_fun_files_and_implemented_in_st_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let w = |n: &str, t: &str| std::fs::write(dir.path().join(n), t).unwrap();
+    w(
+        "Lib.fun",
+        "FUNCTION_BLOCK Counter\n\tVAR_INPUT\n\t\tStep : INT;\n\tEND_VAR\n\tVAR_OUTPUT\n\t\tTotal : INT;\n\tEND_VAR\n\tVAR\n\t\tcalls : INT;\n\tEND_VAR\nEND_FUNCTION_BLOCK\n\nFUNCTION Half : INT\n\tVAR_INPUT\n\t\tx : INT;\n\tEND_VAR\nEND_FUNCTION\n",
+    );
+    w(
+        "Counter.st",
+        "FUNCTION_BLOCK Counter\n\tTotal := Total + Step;\n\tcalls := calls + 1;\nEND_FUNCTION_BLOCK\n",
+    );
+    w("Half.st", "FUNCTION Half\n\tHalf := x / 2;\nEND_FUNCTION\n");
+    w(
+        "Main.var",
+        "VAR\n\tc : Counter;\n\tt : INT;\n\th : INT;\nEND_VAR\n",
+    );
+    w(
+        "Main.st",
+        "PROGRAM _CYCLIC\n\tc(Step := 2);\n\tt := c.Total;\n\th := Half(t);\nEND_PROGRAM\n",
+    );
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "Lib.fun",
+            "Counter.st",
+            "Half.st",
+            "Main.var",
+            "Main.st",
+            "--lang",
+            "st",
+            "--cycles",
+            "3",
+            "--sanitize",
+            "--watch",
+            "Main.t,Main.h,Main.c.calls",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(
+        stdout,
+        "cycle,time_ms,Main.t,Main.h,Main.c.calls\n0,0,2,1,1\n1,10,4,2,2\n2,20,6,3,3\n"
+    );
+    assert!(
+        stderr.contains("Counter.st:1:16: note[W0019]: `Counter` is declared in one file and implemented in this one"),
+        "{stderr}"
+    );
+    // two declarations with statements: still one E1002
+    w(
+        "Lib.fun",
+        "FUNCTION_BLOCK Counter\n\tVAR_INPUT\n\t\tStep : INT;\n\tEND_VAR\n\tVAR_OUTPUT\n\t\tTotal : INT;\n\tEND_VAR\n\tTotal := 0;\nEND_FUNCTION_BLOCK\n",
+    );
+    let (code, _, stderr) = in_dir(
+        dir.path(),
+        &["check", "Lib.fun", "Counter.st", "--lang", "st"],
+    );
+    assert_eq!(code, Some(1), "{stderr}");
+    assert!(
+        stderr.contains("error[E1002]: `Counter` is declared twice"),
         "{stderr}"
     );
 }

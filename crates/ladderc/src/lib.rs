@@ -79,6 +79,7 @@ pub mod pmac_out;
 pub mod progress;
 pub mod project;
 pub mod report;
+pub mod split_blocks;
 pub mod stdio;
 pub mod summary;
 pub mod tc2_axis_ref;

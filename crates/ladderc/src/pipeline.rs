@@ -663,6 +663,8 @@ impl Session {
                 lone.name_owner(&self.map.get(pb.file).name);
             }
         }
+        // B&R: a block declared in a `.fun` file and implemented in a `.st` one is one block
+        crate::split_blocks::join(&mut units, &mut pending, &mut self.diags);
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);

@@ -1,0 +1,113 @@
+//! Blocks declared in one file and implemented in another (B&R Automation Studio: a library's
+//! `.fun` file holds each FUNCTION_BLOCK's declaration blocks, a `.st` file repeats
+//! `FUNCTION_BLOCK Name ... END_FUNCTION_BLOCK` around its statements only).
+//!
+//! Input: the parsed units and the ST bodies not yet compiled. Output: each such pair made one
+//! POU, the implementation's, with the declaration's blocks before its own (and the declaration's
+//! result type for a FUNCTION); the declaration removed with its empty body; one note W0019 at the
+//! implementation. Invariants: only pairs of one kind, in two files, where exactly one has no
+//! statement (no IL instruction and an ST body without a token) are joined; every other
+//! duplicate stays the checks' E1002. Runs before the bodies are compiled, so the statements are
+//! lowered knowing the declarations.
+
+use diagnostics::{code, Diagnostic, Diagnostics, Severity};
+use il_frontend::ast::{CompilationUnit, LibraryElement, PouKind};
+use il_frontend::st::file::PendingBody;
+use std::collections::HashMap;
+
+/// Joins the declaration-only and implementation-only halves of each block (see the module
+/// header).
+pub fn join(
+    units: &mut [CompilationUnit],
+    pending: &mut Vec<PendingBody>,
+    diags: &mut Diagnostics,
+) {
+    // (unit, item) of every function block and function, by upper-case name
+    let mut by_name: HashMap<String, Vec<(usize, usize)>> = HashMap::new();
+    for (u, unit) in units.iter().enumerate() {
+        for (i, item) in unit.items.iter().enumerate() {
+            if let LibraryElement::Pou(p) = item {
+                if matches!(p.kind, PouKind::FunctionBlock | PouKind::Function) {
+                    by_name.entry(p.name.key()).or_default().push((u, i));
+                }
+            }
+        }
+    }
+    let mut removals: Vec<(usize, usize)> = Vec::new();
+    let mut names: Vec<&String> = by_name.keys().collect();
+    names.sort();
+    for name in names {
+        let [a, b] = by_name[name][..] else { continue };
+        let (Some(pa), Some(pb)) = (pou(units, a), pou(units, b)) else {
+            continue;
+        };
+        if pa.kind != pb.kind || pa.name.span.file == pb.name.span.file {
+            continue;
+        }
+        let (ea, eb) = (no_statement(pa, pending), no_statement(pb, pending));
+        let (decl, imp) = match (ea, eb) {
+            (true, false) => (a, b),
+            (false, true) => (b, a),
+            _ => continue,
+        };
+        let Some(d) = pou(units, decl).cloned() else {
+            continue;
+        };
+        let LibraryElement::Pou(p) = &mut units[imp.0].items[imp.1] else {
+            continue;
+        };
+        let mut blocks = d.var_blocks.clone();
+        blocks.append(&mut p.var_blocks);
+        p.var_blocks = blocks;
+        if p.return_type.is_none() {
+            p.return_type = d.return_type.clone();
+        }
+        diags.push(
+            Diagnostic::new(
+                code::W0019,
+                Severity::Note,
+                format!(
+                    "`{}` is declared in one file and implemented in this one: read as one block",
+                    p.name.name
+                ),
+            )
+            .at(p.name.span)
+            .with_primary_label("the statements")
+            .with_label(d.name.span, "the declarations")
+            .with_hint("as B&R Automation Studio keeps a library's blocks (`.fun` and `.st`); for another IEC compiler write one FUNCTION_BLOCK"),
+        );
+        pending.retain(|b| {
+            !(b.file == d.name.span.file && b.name_start == d.name.span.start as usize)
+        });
+        removals.push(decl);
+    }
+    // from the back, so the other indexes stay valid
+    removals.sort();
+    for (u, i) in removals.into_iter().rev() {
+        units[u].items.remove(i);
+    }
+}
+
+fn pou(units: &[CompilationUnit], (u, i): (usize, usize)) -> Option<&il_frontend::ast::Pou> {
+    match units.get(u)?.items.get(i)? {
+        LibraryElement::Pou(p) => Some(p),
+        _ => None,
+    }
+}
+
+/// Whether `p` has no statement: no IL instruction, and no token in its ST body (if it has one).
+fn no_statement(p: &il_frontend::ast::Pou, pending: &[PendingBody]) -> bool {
+    let body = pending
+        .iter()
+        .find(|b| b.file == p.name.span.file && b.name_start == p.name.span.start as usize);
+    p.body.is_empty()
+        && body.is_none_or(|b| {
+            b.actions.is_empty()
+                && b.methods.is_empty()
+                && b.oop.is_none()
+                && il_frontend::st::lexer::lex(&b.text)
+                    .0
+                    .iter()
+                    .all(|t| t.tok == il_frontend::st::lexer::Tok::Eof)
+        })
+}
