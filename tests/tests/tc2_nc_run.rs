@@ -372,3 +372,46 @@ fn couple_state_follows_the_gear_coupling() {
     assert!((0..couple.len()).all(|k| (couple[k] == 3.0) == (coupled[k] == 1.0)));
     assert!((column(&trace, "axis.S.velocity")[on + 20] - 20.0).abs() < 1e-9);
 }
+
+/// TwinCAT 3.1 with independent project files: the PLC instance lives in `_Config/PLC/Cell.xti`
+/// (`<Plc><Project File="Cell.xti"/>`), and so do its "Link To PLC" mappings; they link the
+/// axes as the `.tsproj`'s own did (before: E1056 for both, the mappings not read).
+#[test]
+fn mappings_in_the_plc_projects_xti_link_the_axes() {
+    let dir = copy_of_cell();
+    let tsproj = dir.path().join("Cell.tsproj");
+    let text = std::fs::read_to_string(&tsproj).unwrap();
+    let plc_start = text.find("\t\t\t<Project GUID").unwrap();
+    let plc_end = text.find("\t\t</Plc>").unwrap();
+    let maps_start = text.find("\t<Mappings>").unwrap();
+    let maps_end = text.find("</Mappings>").unwrap() + "</Mappings>\n".len();
+    let instance = &text[plc_start..plc_end];
+    let mappings = &text[maps_start..maps_end];
+    let moved = format!(
+        "{}\t\t\t<Project File=\"Cell.xti\"/>\n{}{}",
+        &text[..plc_start],
+        &text[plc_end..maps_start],
+        &text[maps_end..]
+    );
+    std::fs::write(&tsproj, moved).unwrap();
+    std::fs::create_dir_all(dir.path().join("_Config/PLC")).unwrap();
+    std::fs::write(
+        dir.path().join("_Config/PLC/Cell.xti"),
+        format!("<?xml version=\"1.0\"?>\n<TcSmItem xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" TcSmVersion=\"1.0\" TcVersion=\"3.1.4024.35\" ClassName=\"CNestedPlcProjDef\">\n{instance}{mappings}</TcSmItem>\n"),
+    )
+    .unwrap();
+    let (trace, stderr) = run_traced_files(&[&dir.path().join("Cell/Cell.plcproj")], 400, WATCH);
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert!((max(&column(&trace, "axis.Lift.velocity")) - 150.0).abs() < 1e-9);
+    assert!((max(&column(&trace, "axis.Table_Axis.velocity")) - 90.0).abs() < 1e-9);
+    // without the file the solution names: E1047 at the name
+    std::fs::remove_file(dir.path().join("_Config/PLC/Cell.xti")).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(dir.path().join("Cell/Cell.plcproj"))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("error[E1047]"), "{stderr}");
+}

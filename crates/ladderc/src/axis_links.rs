@@ -508,7 +508,7 @@ fn e1056(path: &str, count: usize, free: &[&str], at: Span, axes: &AxisConfig) -
         )
         .at(at)
         .with_hint(format!(
-            "{which} in TwinCAT (the axis's \"Link To PLC\", saved in the .tsproj's <Mappings>), or \
+            "{which} in TwinCAT (the axis's \"Link To PLC\", saved in the .tsproj's <Mappings> or the PLC's _Config/PLC/*.xti), or \
              give an axes file (--axes FILE.json) with `\"link\": \"{path}\"`"
         ));
     }

@@ -222,7 +222,36 @@ pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
     if axes.is_empty() {
         return None;
     }
-    let links = mappings(&root, file);
+    let mut links = mappings(&root, file);
+    // TwinCAT 3.1 with independent project files keeps a PLC instance's links (its
+    // `<Mappings>`) in `_Config/PLC/<plc>.xti`, which `<Plc><Project File="PLC1.xti"/>` names
+    for plc in root.walk().filter(|e| e.name() == "Plc") {
+        for project in plc.children_named("Project") {
+            let Some((name, (s, e))) = project.attr_and_range("File") else {
+                continue;
+            };
+            let rel: PathBuf = name.split(['\\', '/']).collect();
+            let path = dir.join("_Config").join("PLC").join(rel);
+            let Some((f, src)) = read_xml(session, &path, Span::new(file, s, e)) else {
+                continue;
+            };
+            let plc_arena = Arena::new();
+            let src = plc_arena.str(&src);
+            match ladder_compiler::xml::parse(src, &plc_arena) {
+                (Some(r), None) => {
+                    for l in mappings(&r, f) {
+                        if !links
+                            .iter()
+                            .any(|(a, i, _)| *a == l.0 && i.eq_ignore_ascii_case(&l.1))
+                        {
+                            links.push(l);
+                        }
+                    }
+                }
+                _ => not_xml(session, &path, Span::new(file, s, e)),
+            }
+        }
+    }
     let mut config = config(session, axes, &links);
     config.nc_solution = Some(tsproj.display().to_string());
     Some(config)
