@@ -56,7 +56,8 @@
 //!   an XML POU given with text inputs uses their data types (before: E3009 "not defined in this
 //!   project");
 //! - B&R's library blocks: a FUNCTION_BLOCK (or FUNCTION) declared in a `.fun` file and
-//!   implemented in a `.st` file are one block (W0019; before: E1002 "declared twice").
+//!   implemented in a `.st` file are one block (W0019; before: E1002 "declared twice"); B&R's
+//!   `EDGEPOS(x)`, `EDGENEG(x)`, `EDGE(x)` operators (before: E1019 "unknown function").
 
 mod common;
 use common::{check_text, column, ladderc, run_text, run_traced_files};
@@ -1067,6 +1068,52 @@ fn br_blocks_declared_in_fun_files_and_implemented_in_st_files() {
     assert_eq!(code, Some(1), "{stderr}");
     assert!(
         stderr.contains("error[E1002]: `Counter` is declared twice"),
+        "{stderr}"
+    );
+}
+
+/// B&R's edge operators: each call place keeps its own previous value; rising, falling and any
+/// edges of a signal that is high two cycles of four, also inside an expression and a condition.
+#[test]
+fn br_edge_operators_detect_edges_per_call_place() {
+    let src = "PROGRAM Main
+VAR
+  x : BOOL;
+  n : INT;
+  up, down, any : BOOL;
+  lamp : BOOL;
+  pos, neg, chg : INT;
+END_VAR
+n := n + 1;
+x := (n MOD 4) >= 2;
+up := EDGEPOS(x);
+down := EDGENEG(x);
+any := EDGE(x);
+lamp := EDGEPOS(x) XOR lamp;
+IF EDGEPOS(x) THEN pos := pos + 1; END_IF
+IF EDGENEG(x) THEN neg := neg + 1; END_IF
+IF EDGE(x) THEN chg := chg + 1; END_IF
+END_PROGRAM
+";
+    let (trace, stderr) = run_text(
+        "edges.st",
+        src,
+        9,
+        "Main.x,Main.up,Main.down,Main.any,Main.lamp,Main.pos,Main.neg,Main.chg",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,Main.x,Main.up,Main.down,Main.any,Main.lamp,Main.pos,Main.neg,Main.chg
+0,0,0,0,0,0,0,0,0,0
+1,10,1,1,0,1,1,1,0,1
+2,20,1,0,0,0,1,1,0,1
+3,30,0,0,1,1,1,1,1,2
+4,40,0,0,0,0,1,1,1,2
+5,50,1,1,0,1,0,2,1,3
+6,60,1,0,0,0,0,2,1,3
+7,70,0,0,1,1,0,2,2,4
+8,80,0,0,0,0,0,2,2,4
+",
         "{stderr}"
     );
 }

@@ -62,6 +62,7 @@ pub mod axes;
 pub mod axis_links;
 pub mod beremiz;
 pub mod block_temps;
+pub mod br_edges;
 pub mod cli;
 pub mod depfile;
 pub mod encoding;

@@ -999,6 +999,8 @@ impl Session {
         } = parsed;
         let mut axes = self.axis_config(paths, opts.axes.as_deref())?;
         axes.tc2_tables = crate::tc2_blocks::add(&mut user, &mut self.map, &mut self.diags);
+        // B&R's EDGEPOS / EDGENEG / EDGE operators
+        crate::br_edges::rewrite(&mut user);
         let uses_blocks = uses_library_blocks(&user, &library);
         if uses_blocks {
             crate::axis_links::link(&mut user, &mut axes, &mut self.diags);
