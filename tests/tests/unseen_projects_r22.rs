@@ -21,9 +21,11 @@
 //! - an ST assignment continued on lines that start with `OR` (`q := a` / `OR b` / `OR c;`) is ST
 //!   (before: the body read as IL); an empty `<ST>` body of a block whose actions do the work is ST
 //!   (before: E0304 about an ACTIONS block the user never wrote);
-//! - B&R Automation Studio's layout: a `.var` file of bare `VAR` blocks declares global variables
-//!   (W0018; before: W0001 and E1001 at every use, gary909's VS4 example), `PROGRAM _INIT` runs
-//!   once before the first cycle and `_EXIT` never (before: both every cycle, with `_CYCLIC`);
+//! - B&R Automation Studio's layout: a `.var` file of bare `VAR` blocks declares variables
+//!   (W0018; before: W0001 and E1001 at every use, gary909's VS4 example), a program folder's
+//!   `_INIT`, `_CYCLIC`, `_EXIT` and `.var` files are one program named after the folder (W0020):
+//!   `_INIT` once before the first cycle, `_EXIT` never (before: both every cycle, with
+//!   `_CYCLIC`; two folders: E1002 for every part and variable, Daniele1996's Task2);
 //! - `TOD#10:43:47.260_001`, `DT#1985-05-15-11:30:51.240_001_020`: `_` between digits of a date
 //!   and time (IEC 61131-3's `integer`; before: E0104 at `_001`);
 //! - an integer literal index outside an array's bounds is E1050 where it is written (before:
@@ -512,60 +514,91 @@ fn st_continuation_lines_and_an_empty_body_are_st() {
     );
 }
 
-/// B&R: `Variables.var` (bare VAR blocks, one CONSTANT) given with `Main.st` (`_INIT`, `_CYCLIC`,
-/// `_EXIT`): the variables are globals, `_INIT` sets the counter once, `_CYCLIC` counts each cycle,
-/// `_EXIT` does not run.
+/// B&R: two program folders, each with its own `Variables.var` (bare VAR blocks, one CONSTANT;
+/// the same names in both) and its parts (`Main.st` with `_INIT`, `_CYCLIC`, `_EXIT`; `Init.st`,
+/// `Cyclic.st`, `Exit.st`), beside a project `Global.var`: one program per folder named after it,
+/// its own variables, `_INIT` once before its first cycle, `_EXIT` never; the global list shared.
 #[test]
 fn br_variables_files_and_init_cyclic_exit_programs() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("Variables.var"),
-        "VAR\n\tBtnStart : BOOL;\n\tCount : INT;\n\tExited : BOOL;\nEND_VAR\nVAR CONSTANT\n\tSTEP : INT := 2;\nEND_VAR\n",
-    )
-    .unwrap();
-    std::fs::write(
-        dir.path().join("Main.st"),
-        "PROGRAM _INIT\n\tCount := 100;\nEND_PROGRAM\n\nPROGRAM _CYCLIC\n\tCount := Count + STEP;\nEND_PROGRAM\n\nPROGRAM _EXIT\n\tExited := TRUE;\nEND_PROGRAM\n",
-    )
-    .unwrap();
-    let (code, stdout, stderr) = in_dir(
-        dir.path(),
-        &[
-            "run",
-            "Variables.var",
-            "Main.st",
-            "--lang",
-            "st",
-            "--cycles",
-            "3",
-            "--sanitize",
-            "--watch",
-            "Variables.Count,Variables.Exited",
-            "--trace",
-            "-",
-        ],
+    let w = |n: &str, t: &str| {
+        let p = dir.path().join(n);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, t).unwrap();
+    };
+    w("Logical/Global.var", "VAR\n\tTicks : INT;\nEND_VAR\n");
+    w(
+        "Logical/Conveyor/Variables.var",
+        "VAR\n\tCount : INT;\n\tExited : BOOL;\nEND_VAR\nVAR CONSTANT\n\tSTEP : INT := 2;\nEND_VAR\n",
     );
+    w(
+        "Logical/Conveyor/Main.st",
+        "PROGRAM _INIT\n\tCount := 100;\nEND_PROGRAM\n\nPROGRAM _CYCLIC\n\tCount := Count + STEP;\n\tTicks := Ticks + 1;\nEND_PROGRAM\n\nPROGRAM _EXIT\n\tExited := TRUE;\nEND_PROGRAM\n",
+    );
+    w(
+        "Logical/Knife/Variables.var",
+        "VAR\n\tCount : INT;\n\tExited : BOOL;\nEND_VAR\n",
+    );
+    w(
+        "Logical/Knife/Init.st",
+        "PROGRAM _INIT\n\tCount := -5;\nEND_PROGRAM\n",
+    );
+    w(
+        "Logical/Knife/Cyclic.st",
+        "PROGRAM _CYCLIC\n\tCount := Count - 1;\n\tTicks := Ticks + 10;\nEND_PROGRAM\n",
+    );
+    w(
+        "Logical/Knife/Exit.st",
+        "PROGRAM _EXIT\n\tExited := TRUE;\nEND_PROGRAM\n",
+    );
+    let files = [
+        "Logical/Global.var",
+        "Logical/Conveyor/Variables.var",
+        "Logical/Conveyor/Main.st",
+        "Logical/Knife/Variables.var",
+        "Logical/Knife/Init.st",
+        "Logical/Knife/Cyclic.st",
+        "Logical/Knife/Exit.st",
+    ];
+    let mut args = vec!["run"];
+    args.extend(files);
+    args.extend([
+        "--lang",
+        "st",
+        "--cycles",
+        "3",
+        "--sanitize",
+        "--watch",
+        "Conveyor.Count,Conveyor.Exited,Knife.Count,Knife.Exited,Global.Ticks",
+        "--trace",
+        "-",
+    ]);
+    let (code, stdout, stderr) = in_dir(dir.path(), &args);
     assert_eq!(code, Some(0), "{stderr}");
-    // (a file of global variables is a list named after the file, as a CODESYS GVL file)
     assert_eq!(
         stdout,
-        "cycle,time_ms,Variables.Count,Variables.Exited\n0,0,102,0\n1,10,104,0\n2,20,106,0\n"
+        "cycle,time_ms,Conveyor.Count,Conveyor.Exited,Knife.Count,Knife.Exited,Global.Ticks\n0,0,102,0,-6,0,11\n1,10,104,0,-7,0,22\n2,20,106,0,-8,0,33\n"
     );
     assert!(
-        stderr.starts_with(
-            "Variables.var:1:1: note[W0018]: a VAR block outside any POU: read as global variables"
-        ),
+        stderr.contains("Logical/Global.var:1:1: note[W0018]")
+            && stderr.contains("note[W0020]: B&R program `Conveyor` (its folder)")
+            && stderr.contains("note[W0020]: B&R program `Knife` (its folder)"),
         "{stderr}"
     );
     // a STEP written in the program is refused: the CONSTANT block stays constant
-    std::fs::write(
-        dir.path().join("Main.st"),
+    w(
+        "Logical/Conveyor/Main.st",
         "PROGRAM _CYCLIC\n\tSTEP := 3;\nEND_PROGRAM\n",
-    )
-    .unwrap();
+    );
     let (code, _, stderr) = in_dir(
         dir.path(),
-        &["check", "Variables.var", "Main.st", "--lang", "st"],
+        &[
+            "check",
+            "Logical/Conveyor/Variables.var",
+            "Logical/Conveyor/Main.st",
+            "--lang",
+            "st",
+        ],
     );
     assert_eq!(code, Some(1), "{stderr}");
     assert!(stderr.contains("Main.st:2:2: error["), "{stderr}");
@@ -1009,7 +1042,11 @@ fn xml_files_see_other_inputs_constants_and_types() {
 #[test]
 fn br_blocks_declared_in_fun_files_and_implemented_in_st_files() {
     let dir = tempfile::tempdir().unwrap();
-    let w = |n: &str, t: &str| std::fs::write(dir.path().join(n), t).unwrap();
+    let w = |n: &str, t: &str| {
+        let p = dir.path().join(n);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, t).unwrap();
+    };
     w(
         "Lib.fun",
         "FUNCTION_BLOCK Counter\n\tVAR_INPUT\n\t\tStep : INT;\n\tEND_VAR\n\tVAR_OUTPUT\n\t\tTotal : INT;\n\tEND_VAR\n\tVAR\n\t\tcalls : INT;\n\tEND_VAR\nEND_FUNCTION_BLOCK\n\nFUNCTION Half : INT\n\tVAR_INPUT\n\t\tx : INT;\n\tEND_VAR\nEND_FUNCTION\n",
@@ -1020,11 +1057,11 @@ fn br_blocks_declared_in_fun_files_and_implemented_in_st_files() {
     );
     w("Half.st", "FUNCTION Half\n\tHalf := x / 2;\nEND_FUNCTION\n");
     w(
-        "Main.var",
+        "Main/Main.var",
         "VAR\n\tc : Counter;\n\tt : INT;\n\th : INT;\nEND_VAR\n",
     );
     w(
-        "Main.st",
+        "Main/Main.st",
         "PROGRAM _CYCLIC\n\tc(Step := 2);\n\tt := c.Total;\n\th := Half(t);\nEND_PROGRAM\n",
     );
     let (code, stdout, stderr) = in_dir(
@@ -1034,8 +1071,8 @@ fn br_blocks_declared_in_fun_files_and_implemented_in_st_files() {
             "Lib.fun",
             "Counter.st",
             "Half.st",
-            "Main.var",
-            "Main.st",
+            "Main/Main.var",
+            "Main/Main.st",
             "--lang",
             "st",
             "--cycles",

@@ -63,6 +63,7 @@ pub mod axis_links;
 pub mod beremiz;
 pub mod block_temps;
 pub mod br_edges;
+pub mod br_programs;
 pub mod cli;
 pub mod depfile;
 pub mod encoding;

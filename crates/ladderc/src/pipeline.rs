@@ -668,6 +668,8 @@ impl Session {
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);
+        // B&R: a program folder's _INIT, _CYCLIC, _EXIT and .var files are one program
+        crate::br_programs::join(&mut units, &self.map, &mut self.diags);
         il_frontend::st::qualifiers::set_project_programs(programs_before);
         units
     }

@@ -1,0 +1,188 @@
+//! B&R Automation Studio programs, one folder each (`Logical/Conveyor/`: `Main.st` with `PROGRAM
+//! _INIT`, `_CYCLIC`, `_EXIT`, or `Init.st`, `Cyclic.st`, `Exit.st`; `Variables.var`).
+//!
+//! Input: the parsed units with their IL bodies (the `.var` files' bare VAR blocks already global
+//! lists, W0018) and the source map (the files' paths). Output: for each folder that holds such
+//! parts, one PROGRAM named after the folder whose VAR blocks are the folder's `.var` blocks and
+//! whose body runs `_INIT`'s statements in its first cycle (behind a hidden flag), then
+//! `_CYCLIC`'s; `_EXIT`'s are dropped (a run never stops); one note W0020 per program.
+//! Invariants: only `.var` files of the program's own folder become its variables (a project's
+//! `Global.var` stays global); a folder whose name makes no identifier is named as
+//! [`il_frontend::implicit_program_name`] makes one; labels and flags added start with `__`.
+
+use diagnostics::{code, Diagnostic, Diagnostics, Severity, SourceMap};
+use il_frontend::ast::{
+    CompilationUnit, Condition, Ident, IlStmt, InstrKind, Instruction, LibraryElement, Literal,
+    LiteralKind, Op, Operand, Pou, PouKind, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
+};
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// The B&R program parts.
+const PARTS: [&str; 3] = ["_INIT", "_CYCLIC", "_EXIT"];
+
+/// Joins each folder's program parts and variables (see the module header).
+pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnostics) {
+    // (the file's absolute folder: `Main.st` given from its own folder is in that folder)
+    let dir_of = |file: diagnostics::FileId| -> PathBuf {
+        let name = Path::new(&map.get(file).name);
+        let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
+        path.parent().unwrap_or(Path::new("")).to_path_buf()
+    };
+    // the parts by folder: (unit, item, part)
+    let mut folders: BTreeMap<PathBuf, Vec<(usize, usize, usize)>> = BTreeMap::new();
+    for (u, unit) in units.iter().enumerate() {
+        for (i, item) in unit.items.iter().enumerate() {
+            if let LibraryElement::Pou(p) = item {
+                if let (PouKind::Program, Some(k)) = (
+                    p.kind,
+                    PARTS
+                        .iter()
+                        .position(|n| p.name.name.eq_ignore_ascii_case(n)),
+                ) {
+                    folders
+                        .entry(dir_of(p.name.span.file))
+                        .or_default()
+                        .push((u, i, k));
+                }
+            }
+        }
+    }
+    let mut removals = Vec::new();
+    for (dir, parts) in folders {
+        // one of each part (two `_CYCLIC` in one folder: the checks' E1002)
+        if PARTS
+            .iter()
+            .enumerate()
+            .any(|(k, _)| parts.iter().filter(|p| p.2 == k).count() > 1)
+        {
+            continue;
+        }
+        let part = |k: usize| parts.iter().find(|p| p.2 == k).map(|p| (p.0, p.1));
+        let Some(host) = part(1).or(part(0)) else {
+            continue;
+        };
+        let folder = dir
+            .file_name()
+            .and_then(|n| n.to_str())
+            .unwrap_or("BRProgram");
+        let name = il_frontend::implicit_program_name(folder);
+        // the folder's `.var` blocks: the program's own variables
+        let mut blocks = Vec::new();
+        for unit in units.iter_mut() {
+            unit.items.retain_mut(|item| {
+                let LibraryElement::GlobalVars(b) = item else {
+                    return true;
+                };
+                let file = b.span.file;
+                let path = Path::new(&map.get(file).name);
+                let is_var = path
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("var"));
+                if !is_var || dir_of(file) != dir {
+                    return true;
+                }
+                blocks.push(VarBlock {
+                    name: None,
+                    kind: VarKind::Local,
+                    ..b.clone()
+                });
+                false
+            });
+        }
+        let init = part(0).and_then(|(u, i)| pou_at(units, u, i).cloned());
+        let Some(LibraryElement::Pou(p)) = units[host.0].items.get_mut(host.1) else {
+            continue;
+        };
+        let at = p.name.span;
+        diags.push(
+            Diagnostic::new(
+                code::W0020,
+                Severity::Note,
+                format!("B&R program `{name}` (its folder): the folder's .var variables, _INIT once, then _CYCLIC each cycle"),
+            )
+            .at(at)
+            .with_hint("as Automation Studio builds a program of a folder; _EXIT does not run (a run has no stop)"),
+        );
+        p.name = Ident::new(&name, at);
+        let mut own = blocks;
+        own.append(&mut p.var_blocks);
+        p.var_blocks = own;
+        let cyclic_is_host = part(1).is_some();
+        if let Some(init) = init {
+            let flag = Ident::new("__BR_INIT_DONE", at);
+            p.var_blocks.push(VarBlock::locals(
+                vec![VarDecl {
+                    name: flag.clone(),
+                    location: None,
+                    ty: TypeRef::Named(Ident::new("BOOL", at)),
+                    init: None,
+                    edge: None,
+                    span: at,
+                }],
+                at,
+            ));
+            if cyclic_is_host {
+                p.var_blocks.extend(init.var_blocks.iter().cloned());
+            }
+            let flag_ref = VarRef {
+                base: flag,
+                accessors: Default::default(),
+                span: at,
+            };
+            let instr = |kind| IlStmt::Instr(Instruction { kind, span: at });
+            let label = Ident::new("__BR_CYCLIC", at);
+            let mut body = vec![
+                instr(InstrKind::Simple {
+                    op: Op::Ld,
+                    negate: false,
+                    operand: Some(Operand::Var(flag_ref.clone())),
+                }),
+                instr(InstrKind::Jump {
+                    cond: Condition::IfTrue,
+                    label: label.clone(),
+                }),
+                instr(InstrKind::Simple {
+                    op: Op::Ld,
+                    negate: false,
+                    operand: Some(Operand::literal(Literal {
+                        kind: LiteralKind::Bool(true),
+                        type_prefix: None,
+                        span: at,
+                    })),
+                }),
+                instr(InstrKind::Simple {
+                    op: Op::St,
+                    negate: false,
+                    operand: Some(Operand::Var(flag_ref)),
+                }),
+            ];
+            body.extend(init.body.iter().cloned());
+            body.push(IlStmt::Label(label));
+            if cyclic_is_host {
+                body.append(&mut p.body);
+            }
+            p.body = body;
+            if cyclic_is_host {
+                if let Some((u, i)) = part(0) {
+                    removals.push((u, i));
+                }
+            }
+        }
+        if let Some((u, i)) = part(2) {
+            removals.push((u, i));
+        }
+    }
+    removals.sort();
+    removals.dedup();
+    for (u, i) in removals.into_iter().rev() {
+        units[u].items.remove(i);
+    }
+}
+
+fn pou_at(units: &[CompilationUnit], u: usize, i: usize) -> Option<&Pou> {
+    match units.get(u)?.items.get(i)? {
+        LibraryElement::Pou(p) => Some(p),
+        _ => None,
+    }
+}
