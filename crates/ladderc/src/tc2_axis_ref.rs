@@ -229,7 +229,7 @@ impl AxisPath {
 /// members are read (the hidden blocks are called element by element, unrolled).
 pub const MAX_ARRAY_AXES: i128 = 64;
 
-/// The fields of the declared structures, by type key ([`crate::tc2_mc2::declared_types`]).
+/// The fields of the declared structures, by type key (as `tc2_mc2`'s `declared_types` gives them).
 pub type Structs = std::collections::HashMap<String, std::collections::HashMap<String, TypeRef>>;
 
 /// The `AXIS_REF`s inside `vars`: each variable of that type, each one-dimensional array of them,
