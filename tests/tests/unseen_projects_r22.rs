@@ -62,7 +62,7 @@
 //!   `EDGEPOS(x)`, `EDGENEG(x)`, `EDGE(x)` operators (before: E1019 "unknown function").
 
 mod common;
-use common::{check_text, column, ladderc, run_text, run_traced_files};
+use common::{check_text, column, in_dir, run_text, run_traced_files, write_in};
 use std::path::Path;
 
 /// Two axes held as `axes[i].Axis` in a global array of structures, each driven by an FB through
@@ -252,21 +252,6 @@ fn plcproj(path: &Path, objects: &[&str], extra: &str) {
     .unwrap();
 }
 
-/// `ladderc <args>` in `dir`: (exit code, stdout, stderr).
-fn in_dir(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
-    let out = ladderc()
-        .current_dir(dir)
-        .args(["--message-format", "short"])
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
 /// An encrypted `.plcproj`, and an encrypted object inside a readable project: one E1049 each at
 /// its start, nothing of its bytes read.
 #[test]
@@ -363,35 +348,26 @@ fn an_empty_fb_init_list_is_an_instance() {
         "{stderr}"
     );
     // arguments for a block without FB_init stay an error
-    let (code, lines) = check_text("args.st", &src.replace("FB_Count();", "FB_Count(5);"));
-    assert_eq!(code, Some(1));
-    assert!(lines[0].contains("error[E0329]"), "{lines:?}");
+    assert!(
+        first_error("args.st", &src.replace("FB_Count();", "FB_Count(5);"))
+            .contains("error[E0329]")
+    );
 }
 
 /// A call that mixes positional and named arguments of an unknown function, or of a method of an
 /// instance of an unknown block: the unknown name is the one error.
 #[test]
 fn an_unknown_callee_with_mixed_arguments_is_named() {
-    let (code, lines) = check_text(
+    assert!(one_error(
         "fn.st",
         "PROGRAM Main\nVAR\n  hr : DINT;\n  n : UDINT;\nEND_VAR\nhr := F_Unknown(hr, nOut => n);\nEND_PROGRAM\n",
-    );
-    assert_eq!(code, Some(1));
-    assert_eq!(lines.len(), 1, "{lines:?}");
-    assert!(
-        lines[0].starts_with("fn.st:6:7: error[E1019]: unknown function `F_Unknown`"),
-        "{lines:?}"
-    );
-    let (code, lines) = check_text(
+    )
+    .starts_with("fn.st:6:7: error[E1019]: unknown function `F_Unknown`"));
+    assert!(one_error(
         "fb.st",
         "PROGRAM Main\nVAR\n  fbReq : FB_Missing;\n  s : STRING;\nEND_VAR\nIF fbReq.Send(sUri := s, 0) THEN\n  s := 'x';\nEND_IF\nEND_PROGRAM\n",
-    );
-    assert_eq!(code, Some(1));
-    assert_eq!(lines.len(), 1, "{lines:?}");
-    assert!(
-        lines[0].starts_with("fb.st:3:11: error[E1003]: unknown type `FB_Missing`"),
-        "{lines:?}"
-    );
+    )
+    .starts_with("fb.st:3:11: error[E1003]: unknown type `FB_Missing`"));
     // a known function still mixes them as TwinCAT does (W1422)
     let (trace, stderr) = run_text(
         "known.st",
@@ -521,11 +497,7 @@ fn st_continuation_lines_and_an_empty_body_are_st() {
 #[test]
 fn br_variables_files_and_init_cyclic_exit_programs() {
     let dir = tempfile::tempdir().unwrap();
-    let w = |n: &str, t: &str| {
-        let p = dir.path().join(n);
-        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
-        std::fs::write(p, t).unwrap();
-    };
+    let w = |n: &str, t: &str| write_in(dir.path(), n, t);
     w("Logical/Global.var", "VAR\n\tTicks : INT;\nEND_VAR\n");
     w(
         "Logical/Conveyor/Variables.var",
@@ -764,9 +736,10 @@ END_PROGRAM
         "{stderr}"
     );
     // a subtraction is no offset ladderc can bound
-    let (code, lines) = check_text("sub.st", &src.replace("ADR(dst) + nPos", "ADR(dst) - nPos"));
-    assert_eq!(code, Some(1));
-    assert!(lines[0].contains("error[E1035]"), "{lines:?}");
+    assert!(
+        first_error("sub.st", &src.replace("ADR(dst) + nPos", "ADR(dst) - nPos"))
+            .contains("error[E1035]")
+    );
 }
 
 /// A block whose base is unknown and that declares the interface's method itself: one E0330 (the
@@ -774,13 +747,7 @@ END_PROGRAM
 #[test]
 fn an_unknown_base_is_the_one_error_of_an_implementing_block() {
     let src = "INTERFACE ITF_Observer\nMETHOD Update : BOOL\nVAR_INPUT x : INT; END_VAR\nEND_METHOD\nEND_INTERFACE\n\nFUNCTION_BLOCK FB_Module EXTENDS FB_LibraryBase IMPLEMENTS ITF_Observer\nVAR n : INT; END_VAR\nMETHOD Update : BOOL\nVAR_INPUT x : INT; END_VAR\nn := x;\nUpdate := TRUE;\nEND_METHOD\nEND_FUNCTION_BLOCK\n";
-    let (code, lines) = check_text("impl.st", src);
-    assert_eq!(code, Some(1));
-    assert_eq!(lines.len(), 1, "{lines:?}");
-    assert!(
-        lines[0].starts_with("impl.st:7:34: error[E0330]"),
-        "{lines:?}"
-    );
+    assert!(one_error("impl.st", src).starts_with("impl.st:7:34: error[E0330]"));
 }
 
 /// A flags enumeration with a DWORD base type, without `{attribute 'strict'}`: stored into a
@@ -809,11 +776,8 @@ END_PROGRAM
     );
     assert!(stderr.contains("warning[W1439]"), "{stderr}");
     let strict = format!("{{attribute 'strict'}}\n{src}");
-    let (code, lines) = check_text("strict.st", &strict);
-    assert_eq!(code, Some(1));
     assert!(
-        lines[0].contains("error[E1006]: cannot store E_Flags into DWORD"),
-        "{lines:?}"
+        first_error("strict.st", &strict).contains("error[E1006]: cannot store E_Flags into DWORD")
     );
 }
 
@@ -905,13 +869,10 @@ END_PROGRAM
         stderr.contains("pb.st:3:15: note[W0322]: 1 field(s) of `PBInput`"),
         "{stderr}"
     );
-    let (code, lines) = check_text("fixed.st", &src.replace("AT %I*", "AT %IX0.0"));
-    assert_eq!(code, Some(1));
     assert!(
-        lines[0].starts_with(
+        first_error("fixed.st", &src.replace("AT %I*", "AT %IX0.0")).starts_with(
             "fixed.st:3:15: error[E1055]: the field `pushed` of `PBInput` is at a fixed address"
-        ),
-        "{lines:?}"
+        )
     );
 }
 
@@ -1042,11 +1003,7 @@ fn xml_files_see_other_inputs_constants_and_types() {
 #[test]
 fn br_blocks_declared_in_fun_files_and_implemented_in_st_files() {
     let dir = tempfile::tempdir().unwrap();
-    let w = |n: &str, t: &str| {
-        let p = dir.path().join(n);
-        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
-        std::fs::write(p, t).unwrap();
-    };
+    let w = |n: &str, t: &str| write_in(dir.path(), n, t);
     w(
         "Lib.fun",
         "FUNCTION_BLOCK Counter\n\tVAR_INPUT\n\t\tStep : INT;\n\tEND_VAR\n\tVAR_OUTPUT\n\t\tTotal : INT;\n\tEND_VAR\n\tVAR\n\t\tcalls : INT;\n\tEND_VAR\nEND_FUNCTION_BLOCK\n\nFUNCTION Half : INT\n\tVAR_INPUT\n\t\tx : INT;\n\tEND_VAR\nEND_FUNCTION\n",
@@ -1153,4 +1110,19 @@ END_PROGRAM
 ",
         "{stderr}"
     );
+}
+
+/// The one diagnostic line of `src` (checked as file `name`), which must be rejected (exit 1).
+fn one_error(name: &str, src: &str) -> String {
+    let (code, lines) = check_text(name, src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    lines[0].clone()
+}
+
+/// The first diagnostic line of `src` (checked as file `name`), which must be rejected (exit 1).
+fn first_error(name: &str, src: &str) -> String {
+    let (code, lines) = check_text(name, src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    lines[0].clone()
 }

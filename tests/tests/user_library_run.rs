@@ -10,7 +10,7 @@
 //! from: `otg : Struckig.Otg(cycletime := 0.001, dofs := 6) := (...)` in its examples.
 
 mod common;
-use common::{column, diagnostic_heads, ladderc};
+use common::{column, diagnostic_heads};
 
 use std::path::{Path, PathBuf};
 
@@ -20,17 +20,7 @@ fn fixtures() -> PathBuf {
 
 /// `ladderc --message-format short ARGS` in the fixtures folder: exit code, stdout, stderr.
 fn ladderc_in_fixtures(args: &[&str]) -> (Option<i32>, String, String) {
-    let out = ladderc()
-        .current_dir(fixtures())
-        .args(["--message-format", "short"])
-        .args(args)
-        .output()
-        .unwrap();
-    (
-        out.status.code(),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
+    common::in_dir(&fixtures(), args)
 }
 
 const APP_RUN: &[&str] = &[

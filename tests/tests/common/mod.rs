@@ -363,3 +363,27 @@ pub fn check_text(name: &str, src: &str) -> (Option<i32>, Vec<String>) {
         .collect();
     (out.status.code(), lines)
 }
+
+/// `ladderc --message-format short ARGS` run in `dir`: exit code, stdout, stderr.
+#[allow(dead_code)]
+pub fn in_dir(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
+    let out = ladderc()
+        .current_dir(dir)
+        .args(["--message-format", "short"])
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code(),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// Writes `text` to `dir/name`, creating the folders of `name` (`Logical/Conveyor/Main.st`).
+#[allow(dead_code)]
+pub fn write_in(dir: &Path, name: &str, text: &str) {
+    let p = dir.join(name);
+    std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+    std::fs::write(p, text).unwrap();
+}

@@ -48,13 +48,7 @@ impl Analyzer<'_> {
             match self.address_of(path, r.span, &out[i], &target, out, pou) {
                 Ok((steps, reinterpreted)) => {
                     if let Some((from, to)) = reinterpreted {
-                        self.warning(
-                            code::W1425,
-                            r.span,
-                            format!("{from} stored into {to}: the pointer reads the same bytes as another type"),
-                        )
-                        .label("initial value")
-                        .hint("IEC 61131-3 keeps references typed; CODESYS and TwinCAT convert pointers freely. Accesses stay inside the variable the pointer was made from and must be aligned for the new type");
+                        self.reinterpreted_initial_value(r.span, &from, &to);
                     }
                     out[i].init = Some(ConstValue::Address(AddressInit {
                         of_var: out[i].name.clone(),
@@ -131,13 +125,7 @@ impl Analyzer<'_> {
             match self.address_of(path, r.span, &reference, &target, out, pou) {
                 Ok((steps, reinterpreted)) => {
                     if let Some((from, to)) = reinterpreted {
-                        self.warning(
-                            code::W1425,
-                            r.span,
-                            format!("{from} stored into {to}: the pointer reads the same bytes as another type"),
-                        )
-                        .label("initial value")
-                        .hint("IEC 61131-3 keeps references typed; CODESYS and TwinCAT convert pointers freely. Accesses stay inside the variable the pointer was made from and must be aligned for the new type");
+                        self.reinterpreted_initial_value(r.span, &from, &to);
                     }
                     let address = ConstValue::Address(AddressInit {
                         of_var: out[i].name.clone(),
@@ -157,6 +145,17 @@ impl Analyzer<'_> {
                 }
             }
         }
+    }
+
+    /// W1425 at `span`: an `ADR(x)` initial value makes a pointer read `x` as another type.
+    fn reinterpreted_initial_value(&mut self, span: Span, from: &str, to: &str) {
+        self.warning(
+            code::W1425,
+            span,
+            format!("{from} stored into {to}: the pointer reads the same bytes as another type"),
+        )
+        .label("initial value")
+        .hint("IEC 61131-3 keeps references typed; CODESYS and TwinCAT convert pointers freely. Accesses stay inside the variable the pointer was made from and must be aligned for the new type");
     }
 
     /// The steps of `path` from its base variable, or the error to report.
