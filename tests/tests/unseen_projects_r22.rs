@@ -616,8 +616,9 @@ fn a_namespace_declares_its_pous() {
 }
 
 /// VAR_ACCESS paths to elements: of a global array (written by a stimulus, READ_WRITE), of an
-/// array in a program's structure (READ_ONLY), of a two-dimensional one through the resource; a
-/// subscript outside the bounds is E0308 at the entry.
+/// array in a program's structure (READ_ONLY), of a two-dimensional one through the resource, of
+/// an array field of a global structure (`St.Samples[2]`, before: "no program instance `St`");
+/// a subscript outside the bounds is E0308 at the entry.
 #[test]
 fn an_access_path_may_name_an_array_element() {
     let src = "TYPE
@@ -642,6 +643,7 @@ END_PROGRAM
 CONFIGURATION Cfg
   VAR_GLOBAL
     Values : Samples;
+    St : ST_State;
   END_VAR
   RESOURCE Res ON PLC
     TASK t(INTERVAL := T#10ms, PRIORITY := 0);
@@ -651,12 +653,13 @@ CONFIGURATION Cfg
     Second : Values[2] : INT READ_WRITE;
     Third : inst.State.Samples[3] : INT READ_ONLY;
     Cell : Res.inst.State.Grid[1, 2] : INT;
+    Deep : St.Samples[2] : INT READ_WRITE;
   END_VAR
 END_CONFIGURATION
 ";
     let dir = tempfile::tempdir().unwrap();
     std::fs::write(dir.path().join("acc.st"), src).unwrap();
-    std::fs::write(dir.path().join("in.stim"), "1,Second,4\n").unwrap();
+    std::fs::write(dir.path().join("in.stim"), "1,Second,4\n2,Deep,9\n").unwrap();
     let (code, stdout, stderr) = in_dir(
         dir.path(),
         &[
@@ -692,7 +695,7 @@ END_CONFIGURATION
     assert_eq!(code, Some(1));
     assert_eq!(
         lines,
-        ["bad.st:30:5: error[E0308]: access path `Third`: subscript 4 is outside the bounds 1..3 of `Samples` (hint: name a variable of a program instance of this configuration (`resource.program.variable`), a global or a direct address, with its declared type)"]
+        ["bad.st:31:5: error[E0308]: access path `Third`: subscript 4 is outside the bounds 1..3 of `Samples` (hint: name a variable of a program instance of this configuration (`resource.program.variable`), a global or a direct address, with its declared type)"]
     );
 }
 

@@ -341,7 +341,7 @@ fn wrong_access_paths_are_located_errors() {
     let expect = [
         "access.st:44:9: error[E0308]: access path `speed_setpoint`: the variable is INT, the access path says DINT",
         "access.st:45:9: error[E0308]: access path `ghost`: program `conveyor` has no variable `nothing`",
-        "access.st:46:9: error[E0308]: access path `ghost2`: no program instance `other` in this configuration",
+        "access.st:46:9: error[E0308]: access path `ghost2`: no program instance or global variable `other` in this configuration",
         "access.st:47:9: error[E0308]: access path `ghost3`: `FB_Ramp` has no member `foo`",
         "access.st:48:9: error[E0308]: access path `speed_setpoint`: the access name `speed_setpoint` is declared twice",
     ];

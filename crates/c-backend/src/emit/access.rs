@@ -118,105 +118,102 @@ impl<'a> Gen<'a> {
         // position in `a.path` of `path[0]` (for the subscripts written after a name)
         let skip = a.path.len() - path.len();
         let model = self.model;
-        let target = if path.len() == 1 {
-            // a global of the configuration (or of the resource named)
-            let found = model.global_refs().into_iter().find(|&r| {
-                let in_scope = match r {
-                    GlobalRef::Configuration { config, .. } => config == ci && resource.is_none(),
-                    GlobalRef::Resource {
-                        config,
-                        resource: rr,
-                        ..
-                    } => config == ci && resource.is_none_or(|x| x == rr),
-                    GlobalRef::Free(_) => resource.is_none(),
-                };
-                in_scope && model.global(r).name.eq_ignore_ascii_case(&first.name)
-            });
-            match found {
-                Some(r) => {
-                    match self.element(a, skip, Target::Var(model.global(r), self.global_name(r))) {
-                        Ok(t) => t,
-                        Err(why) => {
-                            self.access_error(a, why);
-                            return false;
-                        }
-                    }
-                }
-                None => {
+        // a global of the configuration (or of the resource named), with the fields and elements
+        // after it (`State.Samples[3]`), or a program instance's variable (`prog.fb.x`)
+        let global = model.global_refs().into_iter().find(|&r| {
+            let in_scope = match r {
+                GlobalRef::Configuration { config, .. } => config == ci && resource.is_none(),
+                GlobalRef::Resource {
+                    config,
+                    resource: rr,
+                    ..
+                } => config == ci && resource.is_none_or(|x| x == rr),
+                GlobalRef::Free(_) => resource.is_none(),
+            };
+            in_scope && model.global(r).name.eq_ignore_ascii_case(&first.name)
+        });
+        let inst = instances.iter().find(|i| {
+            i.configured
+                .is_some_and(|(c, r, _)| c == ci && resource.is_none_or(|x| x == r))
+                && i.watch_name.eq_ignore_ascii_case(&first.name)
+        });
+        let (start, members, first_member) = match (inst, global) {
+            (Some(inst), _) if path.len() > 1 => {
+                let Some(v) = self.pou_var(inst.pou, &path[1].name) else {
+                    let p = &model.pou(inst.pou).name;
                     self.access_error(
                         a,
-                        format!("no global variable `{}` in this configuration", first.name),
+                        format!("program `{p}` has no variable `{}`", path[1].name),
                     );
                     return false;
-                }
+                };
+                let lv = cfmt!("{}.{}", inst.c_name, mangle::var(&v.name));
+                (
+                    self.element(a, skip + 1, Target::Var(v, lv)),
+                    &path[2..],
+                    skip + 2,
+                )
             }
-        } else {
-            let inst = instances.iter().find(|i| {
-                i.configured
-                    .is_some_and(|(c, r, _)| c == ci && resource.is_none_or(|x| x == r))
-                    && i.watch_name.eq_ignore_ascii_case(&first.name)
-            });
-            let Some(inst) = inst else {
+            (_, Some(r)) => {
+                let t = Target::Var(model.global(r), self.global_name(r));
+                (self.element(a, skip, t), &path[1..], skip + 1)
+            }
+            _ => {
+                let what = if path.len() == 1 {
+                    "global variable"
+                } else {
+                    "program instance or global variable"
+                };
                 self.access_error(
                     a,
-                    format!("no program instance `{}` in this configuration", first.name),
+                    format!("no {what} `{}` in this configuration", first.name),
                 );
                 return false;
+            }
+        };
+        let mut target = match start {
+            Ok(t) => t,
+            Err(why) => {
+                self.access_error(a, why);
+                return false;
+            }
+        };
+        for (m, member) in members.iter().enumerate() {
+            let mut lv = match &target {
+                Target::Var(_, lv) | Target::Field(_, lv) => lv.clone(),
             };
-            let Some(v) = self.pou_var(inst.pou, &path[1].name) else {
-                let p = &model.pou(inst.pou).name;
-                self.access_error(
-                    a,
-                    format!("program `{p}` has no variable `{}`", path[1].name),
-                );
+            let ty = match &target {
+                Target::Var(v, _) => v.ty.clone(),
+                Target::Field(t, _) => t.clone(),
+            };
+            let next = match &ty {
+                Type::Fb(FbType::User(id)) => self
+                    .pou_var(*id, &member.name)
+                    .map(|f| (f.ty.clone(), mangle::var(&f.name))),
+                Type::Struct(id) => self
+                    .struct_field(*id, &member.name)
+                    .map(|f| (f.ty.clone(), mangle::var(&f.name))),
+                Type::Fb(FbType::Standard(f)) => crate::ctypes::std_fb(*f)
+                    .1
+                    .iter()
+                    .find(|(p, _, _)| p.eq_ignore_ascii_case(&member.name))
+                    .map(|(p, e, _)| (Type::Elementary(*e), (*p).to_string())),
+                _ => None,
+            };
+            let Some((t, field)) = next else {
+                let tn = model.type_name(&ty);
+                self.access_error(a, format!("`{tn}` has no member `{}`", member.name));
                 return false;
             };
-            let lv = cfmt!("{}.{}", inst.c_name, mangle::var(&v.name));
-            let mut target = match self.element(a, skip + 1, Target::Var(v, lv)) {
+            lv = cfmt!("{lv}.{field}");
+            target = match self.element(a, first_member + m, Target::Field(t, lv)) {
                 Ok(t) => t,
                 Err(why) => {
                     self.access_error(a, why);
                     return false;
                 }
             };
-            for (m, member) in path[2..].iter().enumerate() {
-                let mut lv = match &target {
-                    Target::Var(_, lv) | Target::Field(_, lv) => lv.clone(),
-                };
-                let ty = match &target {
-                    Target::Var(v, _) => v.ty.clone(),
-                    Target::Field(t, _) => t.clone(),
-                };
-                let next = match &ty {
-                    Type::Fb(FbType::User(id)) => self
-                        .pou_var(*id, &member.name)
-                        .map(|f| (f.ty.clone(), mangle::var(&f.name))),
-                    Type::Struct(id) => self
-                        .struct_field(*id, &member.name)
-                        .map(|f| (f.ty.clone(), mangle::var(&f.name))),
-                    Type::Fb(FbType::Standard(f)) => crate::ctypes::std_fb(*f)
-                        .1
-                        .iter()
-                        .find(|(p, _, _)| p.eq_ignore_ascii_case(&member.name))
-                        .map(|(p, e, _)| (Type::Elementary(*e), (*p).to_string())),
-                    _ => None,
-                };
-                let Some((t, field)) = next else {
-                    let tn = model.type_name(&ty);
-                    self.access_error(a, format!("`{tn}` has no member `{}`", member.name));
-                    return false;
-                };
-                lv = cfmt!("{lv}.{field}");
-                target = match self.element(a, skip + 2 + m, Target::Field(t, lv)) {
-                    Ok(t) => t,
-                    Err(why) => {
-                        self.access_error(a, why);
-                        return false;
-                    }
-                };
-            }
-            target
-        };
+        }
         let ty = match &target {
             Target::Var(v, _) => v.ty.clone(),
             Target::Field(t, _) => t.clone(),
