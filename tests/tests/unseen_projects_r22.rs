@@ -613,6 +613,14 @@ fn a_namespace_declares_its_pous() {
     let (trace, stderr) = run_text("ns.st", src, 1, "main.r,main.s");
     assert_eq!(trace, "cycle,time_ms,main.r,main.s\n0,0,6,12\n", "{stderr}");
     assert!(!stderr.contains("warning"), "{stderr}");
+    // a dotted namespace with a type: `Factory.Motion.Speed`, `Factory.Motion.Clamp(...)`
+    let dotted = "NAMESPACE Factory.Motion\nTYPE\n  Speed : INT;\nEND_TYPE\nFUNCTION Clamp : Speed\n  VAR_INPUT Value : Speed; END_VAR\n  Clamp := LIMIT(0, Value, 5);\nEND_FUNCTION\nEND_NAMESPACE\nUSING Factory.Motion;\nPROGRAM Main\n  VAR\n    Current : Factory.Motion.Speed := 7;\n    Other : Speed;\n  END_VAR\n  Current := Factory.Motion.Clamp(Current);\n  Other := Clamp(-3);\nEND_PROGRAM\n";
+    let (trace, stderr) = run_text("dotted.st", dotted, 1, "Main.Current,Main.Other");
+    assert_eq!(
+        trace, "cycle,time_ms,Main.Current,Main.Other\n0,0,5,0\n",
+        "{stderr}"
+    );
+    assert!(!stderr.contains("warning"), "{stderr}");
 }
 
 /// VAR_ACCESS paths to elements: of a global array (written by a stimulus, READ_WRITE), of an

@@ -153,7 +153,8 @@ pub fn offered_names(unit: &crate::ast::CompilationUnit) -> impl Iterator<Item =
     })
 }
 
-/// The names (upper case) of the file's `NAMESPACE Name ... END_NAMESPACE` blocks, whose words
+/// The names (upper case, dotted parts joined by `.`) of the file's `NAMESPACE Name ...
+/// END_NAMESPACE` blocks, whose words
 /// (`NAMESPACE Name`, `NAMESPACE INTERNAL Name`, `END_NAMESPACE` and a `;` after it) are blanked in
 /// `text`. A `NAMESPACE` with no `END_NAMESPACE` after it is left alone (a name of the program).
 fn namespace_blocks(src: &str, toks: &[Token], text: &mut Option<String>) -> Vec<String> {
@@ -172,14 +173,20 @@ fn namespace_blocks(src: &str, toks: &[Token], text: &mut Option<String>) -> Vec
             if !toks.get(j).is_some_and(|n| n.tok == Tok::Ident) {
                 continue;
             }
-            // `NAMESPACE A.B`: the last part qualifies the names inside
+            // `NAMESPACE A.B`: `A.B.Name` names what it declares
             let mut last = j;
             while toks.get(last + 1).is_some_and(|d| d.tok == Tok::Dot)
                 && toks.get(last + 2).is_some_and(|n| n.tok == Tok::Ident)
             {
                 last += 2;
             }
-            names.push(word(src, &toks[last]).to_ascii_uppercase());
+            names.push(
+                (j..=last)
+                    .step_by(2)
+                    .map(|p| word(src, &toks[p]).to_ascii_uppercase())
+                    .collect::<Vec<_>>()
+                    .join("."),
+            );
             blank(
                 text.get_or_insert_with(|| src.to_string()),
                 t.range.start..toks[last].range.end,
@@ -266,6 +273,23 @@ pub(super) fn library_qualifiers(
         }
         let prev = k.checked_sub(1).map(|p| &toks[p]);
         if prev.is_some_and(|p| p.tok == Tok::Dot) {
+            continue;
+        }
+        // `Factory.Motion.Speed` of `NAMESPACE Factory.Motion`: the whole chain blanked
+        if let Some(end) = namespaces.iter().find_map(|ns| {
+            let parts: Vec<&str> = ns.split('.').collect();
+            let matches = parts.iter().enumerate().all(|(n, part)| {
+                toks.get(k + 2 * n)
+                    .is_some_and(|t| ident(t) && word(src, t).eq_ignore_ascii_case(part))
+                    && toks.get(k + 2 * n + 1).is_some_and(|d| d.tok == Tok::Dot)
+            });
+            let member = toks.get(k + 2 * parts.len()).is_some_and(ident);
+            (parts.len() > 1 && matches && member).then(|| toks[k + 2 * parts.len() - 1].range.end)
+        }) {
+            blank(
+                text.get_or_insert_with(|| src.to_string()),
+                t.range.start..end,
+            );
             continue;
         }
         let text = text.get_or_insert_with(|| src.to_string());

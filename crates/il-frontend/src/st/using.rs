@@ -62,9 +62,24 @@ pub(super) fn namespace_imports(
         // a namespace this file declares (`NAMESPACE Lib ... END_NAMESPACE`): its names are the
         // file's, reached plain or `Lib.`-qualified (`qualifiers`): nothing to report
         let declared = |n: &String| {
-            let last = n.rsplit('.').next().unwrap_or(n);
-            toks.windows(2)
-                .any(|w| is_word(src, &w[0], "NAMESPACE") && is_word(src, &w[1], last))
+            (0..toks.len()).any(|k| {
+                if !is_word(src, &toks[k], "NAMESPACE") {
+                    return false;
+                }
+                // `NAMESPACE Factory.Motion`: its dotted name
+                let mut name = String::new();
+                let mut j = k + 1;
+                while let Some(t) = toks.get(j).filter(|t| t.tok == Tok::Ident) {
+                    name.push_str(word(src, t));
+                    if toks.get(j + 1).is_some_and(|d| d.tok == Tok::Dot) {
+                        name.push('.');
+                        j += 2;
+                    } else {
+                        break;
+                    }
+                }
+                name.eq_ignore_ascii_case(n)
+            })
         };
         if names.iter().all(declared) {
             let text = out.get_or_insert_with(|| src.to_string());
