@@ -47,6 +47,8 @@
 //! - an enumerated value inside an operation of a constant's initial value (`N : INT :=
 //!   E_Idx.Last + 1`; before: E0022 "`Last` is not a constant"), and `SIZEOF(STRING(255))` (before:
 //!   E1034);
+//! - a FUNCTION whose result is an array (`FUNCTION posicionEstanteria : ARRAY[1..4] OF REAL`,
+//!   noeliast's TFM; before: E2005): the result travels in a struct, `a := F(x);` copies it;
 //! - a structure field declared `AT %I*` (TwinCAT DUTs and their PLCopen XML exports) is a plain
 //!   field of each instance (W0322; before: `check` passed and `run` failed with E9002, a C field
 //!   missing); one at a fixed address is E1055;
@@ -1136,4 +1138,54 @@ fn first_error(name: &str, src: &str) -> String {
     let (code, lines) = check_text(name, src);
     assert_eq!(code, Some(1), "{lines:?}");
     lines[0].clone()
+}
+
+/// A FUNCTION returning an array: stored whole into an array variable, returned early by RETURN
+/// (the elements set so far), not run with EN FALSE (zeros, ENO FALSE), called for nothing; and
+/// an array of arrays. The C compiles with -Wall -Wextra -Werror.
+#[test]
+fn a_function_may_return_an_array() {
+    let src = "TYPE M2 : ARRAY[0..1] OF REAL; END_TYPE
+FUNCTION Pick : ARRAY[1..3] OF INT
+VAR_INPUT n : INT; END_VAR
+VAR i : INT; END_VAR
+FOR i := 1 TO 3 DO
+  Pick[i] := n * i;
+  IF n < 0 THEN RETURN; END_IF
+END_FOR
+END_FUNCTION
+FUNCTION Grid : ARRAY[1..2] OF M2
+VAR_INPUT x : REAL; END_VAR
+Grid[1][0] := x;
+Grid[2][1] := 2.0 * x;
+END_FUNCTION
+PROGRAM MAIN
+VAR
+  a, b, c : ARRAY[1..3] OF INT;
+  g : ARRAY[1..2] OF M2;
+  ok : BOOL := TRUE;
+  n : INT := 1;
+END_VAR
+a := Pick(n);
+b := Pick(-2);
+c := Pick(EN := FALSE, n := 5, ENO => ok);
+g := Grid(1.5);
+n := n + 1;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text(
+        "arr.st",
+        src,
+        2,
+        "MAIN.a[1],MAIN.a[3],MAIN.b[1],MAIN.b[2],MAIN.c[1],MAIN.ok,MAIN.g[1][0],MAIN.g[2][1]",
+    );
+    assert_eq!(
+        trace,
+        "cycle,time_ms,MAIN.a[1],MAIN.a[3],MAIN.b[1],MAIN.b[2],MAIN.c[1],MAIN.ok,MAIN.g[1][0],MAIN.g[2][1]\n0,0,1,3,-2,0,0,0,1.5,3\n1,10,2,6,-2,0,0,0,1.5,3\n",
+        "{stderr}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("arr.st");
+    std::fs::write(&f, src).unwrap();
+    common::build_and_make(&f, "-std=c99 -Wall -Wextra -Werror -O1");
 }

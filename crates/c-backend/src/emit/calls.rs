@@ -498,6 +498,17 @@ impl Gen<'_> {
         }
         let mut result = None;
         match (&pou.return_type, info.cr_after.clone()) {
+            // an array result: its struct (`F_RET`) copied into the current result's array
+            (Some(Type::Array { .. }), Some(after)) => {
+                if let Some(cr) = self.cr(b, &after, span) {
+                    let t = b.temp();
+                    b.line_fmt(format_args!(
+                        "{{ {}_RET {t} = {call}; memcpy(&{cr}, &{t}.a, sizeof {cr} < sizeof {t}.a ? sizeof {cr} : sizeof {t}.a); }}",
+                        mangle::function(&pou.name)
+                    ));
+                    result = Some((cr, after));
+                }
+            }
             (Some(rt), Some(after)) => {
                 if let Some(cr) = self.cr(b, &after, span) {
                     let v = convert(&call, rt, &after);
@@ -515,8 +526,12 @@ impl Gen<'_> {
             b.line("} else {");
             b.indent += 1;
             if let Some((cr, after)) = result {
-                let d = self.default_value(&after, None, span);
-                b.line_fmt(format_args!("{cr} = {d};"));
+                if matches!(after, Type::Array { .. }) {
+                    b.line_fmt(format_args!("memset(&{cr}, 0, sizeof {cr});"));
+                } else {
+                    let d = self.default_value(&after, None, span);
+                    b.line_fmt(format_args!("{cr} = {d};"));
+                }
             }
             b.line_fmt(format_args!("{eno} = 0;"));
             b.indent -= 1;

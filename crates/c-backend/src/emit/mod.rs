@@ -497,6 +497,17 @@ impl<'a> Gen<'a> {
             let model: &'a Model = self.model;
             let p = &model.pous[i];
             if p.kind == PouKind::Function {
+                // an array result travels in a struct (C returns no arrays): `F_RET`, and
+                // `F_box` that fills one from the function's result variable
+                if let Some(rt @ Type::Array { .. }) = &p.return_type {
+                    let name = mangle::function(&p.name);
+                    if let Some(d) = ctypes::declare(self.model, rt, "a") {
+                        let _ = writeln!(
+                            h,
+                            "typedef struct {{ {d}; }} {name}_RET;\nstatic inline {name}_RET {name}_box(const void *a_) {{ {name}_RET r_; memcpy(&r_.a, a_, sizeof r_.a); return r_; }}"
+                        );
+                    }
+                }
                 if let Some(sig) = self.function_signature(p) {
                     let _ = writeln!(h, "{sig};");
                 }
@@ -575,10 +586,7 @@ impl<'a> Gen<'a> {
     fn function_signature(&mut self, p: &il_frontend::sema::Pou) -> Option<String> {
         let ret = match &p.return_type {
             Some(t) => match t {
-                Type::Array { .. } => {
-                    self.unsupported(p.span, "a FUNCTION returning an array");
-                    return None;
-                }
+                Type::Array { .. } => cfmt!("{}_RET", mangle::function(&p.name)),
                 t => ctypes::base(self.model, t)?,
             },
             None => "void".into(),
@@ -690,10 +698,17 @@ impl<'a> Gen<'a> {
                 return;
             };
             let ret_var = mangle::var(&p.name);
-            let ret = if p.return_type.is_some() {
-                ret_var.clone()
-            } else {
-                String::new()
+            let ret = match &p.return_type {
+                // an array result: its struct made from the result variable (`F_box`)
+                Some(Type::Array { .. }) if plan.is_some() => {
+                    self.unsupported(p.span, "a FUNCTION returning an array, split into parts");
+                    return;
+                }
+                Some(Type::Array { .. }) => {
+                    cfmt!("{}_box(&{ret_var})", mangle::function(&p.name))
+                }
+                Some(_) => ret_var.clone(),
+                None => String::new(),
             };
             let mut b = Body::new(&scope, 1, ret.clone());
             b.targets = targets;
