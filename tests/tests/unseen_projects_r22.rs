@@ -1141,8 +1141,9 @@ fn first_error(name: &str, src: &str) -> String {
 }
 
 /// A FUNCTION returning an array: stored whole into an array variable, returned early by RETURN
-/// (the elements set so far), not run with EN FALSE (zeros, ENO FALSE), called for nothing; and
-/// an array of arrays. The C compiles with -Wall -Wextra -Werror.
+/// (the elements set so far), not run with EN FALSE (zeros, ENO FALSE); an array of a named array
+/// type, and `ARRAY[..] OF ARRAY[..] OF REAL` as the result type (before: E0011 "expected OF").
+/// The C compiles with -Wall -Wextra -Werror.
 #[test]
 fn a_function_may_return_an_array() {
     let src = "TYPE M2 : ARRAY[0..1] OF REAL; END_TYPE
@@ -1159,10 +1160,15 @@ VAR_INPUT x : REAL; END_VAR
 Grid[1][0] := x;
 Grid[2][1] := 2.0 * x;
 END_FUNCTION
+FUNCTION Nested : ARRAY[1..2] OF ARRAY[0..1] OF REAL
+VAR_INPUT x : REAL; END_VAR
+Nested[2][0] := -x;
+END_FUNCTION
 PROGRAM MAIN
 VAR
   a, b, c : ARRAY[1..3] OF INT;
   g : ARRAY[1..2] OF M2;
+  h : ARRAY[1..2] OF ARRAY[0..1] OF REAL;
   ok : BOOL := TRUE;
   n : INT := 1;
 END_VAR
@@ -1170,6 +1176,7 @@ a := Pick(n);
 b := Pick(-2);
 c := Pick(EN := FALSE, n := 5, ENO => ok);
 g := Grid(1.5);
+h := Nested(4.0);
 n := n + 1;
 END_PROGRAM
 ";
@@ -1177,11 +1184,11 @@ END_PROGRAM
         "arr.st",
         src,
         2,
-        "MAIN.a[1],MAIN.a[3],MAIN.b[1],MAIN.b[2],MAIN.c[1],MAIN.ok,MAIN.g[1][0],MAIN.g[2][1]",
+        "MAIN.a[1],MAIN.a[3],MAIN.b[1],MAIN.b[2],MAIN.c[1],MAIN.ok,MAIN.g[1][0],MAIN.g[2][1],MAIN.h[2][0]",
     );
     assert_eq!(
         trace,
-        "cycle,time_ms,MAIN.a[1],MAIN.a[3],MAIN.b[1],MAIN.b[2],MAIN.c[1],MAIN.ok,MAIN.g[1][0],MAIN.g[2][1]\n0,0,1,3,-2,0,0,0,1.5,3\n1,10,2,6,-2,0,0,0,1.5,3\n",
+        "cycle,time_ms,MAIN.a[1],MAIN.a[3],MAIN.b[1],MAIN.b[2],MAIN.c[1],MAIN.ok,MAIN.g[1][0],MAIN.g[2][1],MAIN.h[2][0]\n0,0,1,3,-2,0,0,0,1.5,3,-4\n1,10,2,6,-2,0,0,0,1.5,3,-4\n",
         "{stderr}"
     );
     let dir = tempfile::tempdir().unwrap();

@@ -424,7 +424,8 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 // FUNCTION f : TYPE (STRING[20], ARRAY [..] OF T); FUNCTION_BLOCK fb EXTENDS b.
                 if w == "FUNCTION" && toks.get(i).is_some_and(|t| t.tok == Tok::Colon) {
                     i += 1;
-                    if toks.get(i).is_some_and(|t| is_word(src, t, "ARRAY")) {
+                    // (`ARRAY [..] OF ARRAY [..] OF T`: past each ARRAY's OF, to the element type)
+                    while toks.get(i).is_some_and(|t| is_word(src, t, "ARRAY")) {
                         i = skip_to(i, "OF");
                     }
                     i += 1;
