@@ -44,9 +44,7 @@
 //!   example; before: E1006, E1005);
 //! - a missing `;` at the end of a body says "found the end of the body" (before: "end of
 //!   text");
-//! - an enumerated value inside an operation of a constant's initial value (`N : INT :=
-//!   E_Idx.Last + 1`; before: E0022 "`Last` is not a constant"), and `SIZEOF(STRING(255))` (before:
-//!   E1034);
+//! - `SIZEOF(STRING(255))` (before: E1034);
 //! - a FUNCTION whose result is an array (`FUNCTION posicionEstanteria : ARRAY[1..4] OF REAL`,
 //!   noeliast's TFM; before: E2005): the result travels in a struct, `a := F(x);` copies it;
 //! - a structure field declared `AT %I*` (TwinCAT DUTs and their PLCopen XML exports) is a plain
@@ -808,28 +806,25 @@ fn a_missing_semicolon_at_the_end_names_the_body() {
     );
 }
 
-/// `E_Idx.Last + 1` as a constant's value, `E_Idx.Last` as a bound, `SIZEOF(STRING(255))` and
-/// `SIZEOF(WSTRING(10))` as the sizes of such variables.
+/// `SIZEOF(STRING(255))` and `SIZEOF(WSTRING(10))` are the sizes of such variables (every STRING
+/// one size in ladderc's layout); an enumeration's value bounds an array.
 #[test]
-fn enumerated_values_in_constants_and_sizeof_of_a_string_type() {
+fn sizeof_of_a_string_type_is_its_variables_size() {
     let src = "TYPE E_Idx : (First := 0, Second, Last); END_TYPE
 PROGRAM Main
-VAR CONSTANT
-  N : INT := E_Idx.Last + 1;
-END_VAR
 VAR
   arr : ARRAY [0..E_Idx.Last] OF INT;
   s : STRING(255);
   w : WSTRING(10);
   same : BOOL;
 END_VAR
-arr[2] := N;
+arr[2] := 3;
 same := SIZEOF(STRING(255)) = SIZEOF(s) AND SIZEOF(WSTRING(10)) = SIZEOF(w) AND SIZEOF(s) > 255;
 END_PROGRAM
 ";
-    let (trace, stderr) = run_text("k.st", src, 1, "Main.N,Main.arr[2],Main.same");
+    let (trace, stderr) = run_text("k.st", src, 1, "Main.arr[2],Main.same");
     assert_eq!(
-        trace, "cycle,time_ms,Main.N,Main.arr[2],Main.same\n0,0,3,3,1\n",
+        trace, "cycle,time_ms,Main.arr[2],Main.same\n0,0,3,1\n",
         "{stderr}"
     );
 }

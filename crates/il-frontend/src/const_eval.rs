@@ -124,14 +124,11 @@ fn eval_at(e: &BoundExpr, consts: &Known, depth: u32) -> Result<ConstNum, String
         BoundExpr::NotNumber(_) => {
             Err("only numbers and durations (T#...) make constant expressions".into())
         }
-        // an enumerated value is its number in a bound, and inside an operation of an initial
-        // value (`N : INT := E_Idx.Last + 1`, CODESYS, TwinCAT); alone it stays a value of its
-        // enumeration
         BoundExpr::Name(n) => match consts.consts.get(&n.name.to_ascii_uppercase()).or_else(|| {
             consts
                 .consts
                 .get(&enum_key(&n.name))
-                .filter(|_| consts.integers || depth > 0)
+                .filter(|_| consts.integers)
         }) {
             Some(v) if !consts.integers || matches!(v, ConstNum::Int(_)) => Ok(*v),
             _ if consts.integers => Err(format!(
