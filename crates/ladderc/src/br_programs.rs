@@ -15,7 +15,7 @@ use il_frontend::ast::{
     CompilationUnit, Condition, Ident, IlStmt, InstrKind, Instruction, LibraryElement, Literal,
     LiteralKind, Op, Operand, Pou, PouKind, TypeRef, VarBlock, VarDecl, VarKind, VarRef,
 };
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashMap};
 use std::path::{Path, PathBuf};
 
 /// The B&R program parts.
@@ -23,11 +23,18 @@ const PARTS: [&str; 3] = ["_INIT", "_CYCLIC", "_EXIT"];
 
 /// Joins each folder's program parts and variables (see the module header).
 pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnostics) {
-    // (the file's absolute folder: `Main.st` given from its own folder is in that folder)
-    let dir_of = |file: diagnostics::FileId| -> PathBuf {
-        let name = Path::new(&map.get(file).name);
-        let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
-        path.parent().unwrap_or(Path::new("")).to_path_buf()
+    // each file's absolute folder (`Main.st` given from its own folder is in that folder),
+    // looked up once per file
+    let mut folders_of: HashMap<diagnostics::FileId, PathBuf> = HashMap::new();
+    let mut dir_of = |file: diagnostics::FileId| -> PathBuf {
+        folders_of
+            .entry(file)
+            .or_insert_with(|| {
+                let name = Path::new(&map.get(file).name);
+                let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
+                path.parent().unwrap_or(Path::new("")).to_path_buf()
+            })
+            .clone()
     };
     // the parts by folder: (unit, item, part)
     let mut folders: BTreeMap<PathBuf, Vec<(usize, usize, usize)>> = BTreeMap::new();

@@ -321,15 +321,10 @@ impl Session {
         // several PLCopen XML files (CODESYS exports one object per file), or XML beside text
         // inputs (a TwinCAT project's `.TcDUT` types of an imported PLCopen POU): compiled once
         // all are read, each knowing the POUs and data types of the others
-        let xml_inputs = paths
-            .iter()
-            .filter(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")))
-            .count();
-        let xml_inputs = if xml_inputs > 0 && paths.len() > 1 {
-            paths.len()
-        } else {
-            xml_inputs
-        };
+        let defer_xml = paths.len() > 1
+            && paths
+                .iter()
+                .any(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")));
         let mut deferred_xml: Vec<(usize, diagnostics::FileId, Option<PathBuf>)> = Vec::new();
         for p in &paths {
             // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals
@@ -519,7 +514,7 @@ impl Session {
                 (Some(text), _) | (None, Some(text)) => (Lang::St, text.as_str()),
                 (None, None) => (file_lang, src.as_str()),
             };
-            if file_lang == Lang::Xml && xml_inputs > 1 {
+            if file_lang == Lang::Xml && defer_xml {
                 deferred_xml.push((units.len(), file, beremiz_dir.clone()));
                 units.push(il_frontend::ast::CompilationUnit::default());
             } else if file_lang == Lang::Xml {

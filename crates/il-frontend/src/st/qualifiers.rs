@@ -244,6 +244,12 @@ pub(super) fn library_qualifiers(
     // edition 3's `NAMESPACE Lib ... END_NAMESPACE` (6.9): the words blanked, so the POUs and
     // types inside are the file's, and `Lib.Name` names them as a provided library's name does
     let namespaces = namespace_blocks(src, toks, &mut text);
+    // the dotted ones by their parts (`Factory.Motion.Speed`)
+    let dotted: Vec<Vec<&str>> = namespaces
+        .iter()
+        .filter(|n| n.contains('.'))
+        .map(|n| n.split('.').collect())
+        .collect();
     let mut reported = std::collections::HashSet::new();
     let mut in_decl = false;
     for (k, t) in toks.iter().enumerate() {
@@ -276,15 +282,14 @@ pub(super) fn library_qualifiers(
             continue;
         }
         // `Factory.Motion.Speed` of `NAMESPACE Factory.Motion`: the whole chain blanked
-        if let Some(end) = namespaces.iter().find_map(|ns| {
-            let parts: Vec<&str> = ns.split('.').collect();
+        if let Some(end) = dotted.iter().find_map(|parts| {
             let matches = parts.iter().enumerate().all(|(n, part)| {
                 toks.get(k + 2 * n)
                     .is_some_and(|t| ident(t) && word(src, t).eq_ignore_ascii_case(part))
                     && toks.get(k + 2 * n + 1).is_some_and(|d| d.tok == Tok::Dot)
             });
             let member = toks.get(k + 2 * parts.len()).is_some_and(ident);
-            (parts.len() > 1 && matches && member).then(|| toks[k + 2 * parts.len() - 1].range.end)
+            (matches && member).then(|| toks[k + 2 * parts.len() - 1].range.end)
         }) {
             blank(
                 text.get_or_insert_with(|| src.to_string()),
