@@ -282,8 +282,8 @@ fn memory_functions_are_bounded_by_their_variables() {
     assert_eq!(lines[2], "1,10,170,170,2,6,0,43,2.5,1,4,7,0,1,2,2,5,7");
     assert!(
         stderr.contains(
-            "runtime: memory function count beyond its variables (first: MEMCPY in Main; clipped \
-             to their size)"
+            "runtime: memory function count beyond its variables (first: MEMCPY in Main at \
+             memory.st:26; clipped to their size)"
         ),
         "{stderr}"
     );

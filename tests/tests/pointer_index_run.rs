@@ -167,13 +167,13 @@ fn out_of_bounds_pointer_accesses_read_zero_and_drop_the_write() {
     }
     assert!(
         stderr.contains(
-            "runtime: pointer outside its variable dereferenced (first: p[k] in Main; zero read, write dropped)"
+            "runtime: pointer outside its variable dereferenced (first: p[k] in Main at pointer_faults.st:27; zero read, write dropped)"
         ),
         "{stderr}"
     );
     assert!(
         stderr.contains(
-            "runtime: NULL reference dereferenced (first: np[3] in Main; zero read, write dropped)"
+            "runtime: NULL reference dereferenced (first: np[3] in Main at pointer_faults.st:46; zero read, write dropped)"
         ),
         "{stderr}"
     );

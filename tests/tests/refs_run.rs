@@ -132,7 +132,7 @@ fn a_null_dereference_reads_zero_drops_the_write_and_is_reported() {
     assert_eq!(column(&trace, "main.value"), [8.0, 8.0, 9.0]);
     assert!(
         stderr.contains(
-            "runtime: NULL reference dereferenced (first: r^ in main; zero read, write dropped)"
+            "runtime: NULL reference dereferenced (first: r^ in main at null_deref.st:17; zero read, write dropped)"
         ),
         "{stderr}"
     );

@@ -657,7 +657,9 @@ int main(int argc, char **argv) {
     free(columns);
     if (ladderc_errors & LADDERC_ERR_DIV_ZERO) fprintf(stderr, "runtime: integer division by zero (result 0)\n");
     if (ladderc_errors & LADDERC_ERR_RANGE) fprintf(stderr, "runtime: conversion out of range or value outside a subrange (saturated)\n");
-    if (ladderc_errors & LADDERC_ERR_BOUNDS) fprintf(stderr, "runtime: array index out of range\n");
+    if (ladderc_errors & LADDERC_ERR_BOUNDS)
+        fprintf(stderr, "runtime: array index out of range (first: %s, index %lld outside %lld..%lld; the first element used)\n",
+                ladderc_bounds_site, (long long)ladderc_bounds_at[0], (long long)ladderc_bounds_at[1], (long long)ladderc_bounds_at[2]);
     if (ladderc_errors & LADDERC_ERR_STRING) fprintf(stderr, "runtime: string truncated\n");
     if (ladderc_errors & LADDERC_ERR_STRPOS) fprintf(stderr, "runtime: string length or position out of range\n");
     if (ladderc_errors & LADDERC_ERR_MUX) fprintf(stderr, "runtime: MUX selector K out of range (IN0 selected)\n");

@@ -12,6 +12,8 @@ uint32_t ladderc_errors = 0;
 const char *ladderc_null_ref_site = "";
 const char *ladderc_mem_site = "";
 const char *ladderc_pointer_site = "";
+const char *ladderc_bounds_site = "";
+int64_t ladderc_bounds_at[3];
 IEC_TIME ladderc_now = 0;
 uint64_t ladderc_cycle = 0;
 

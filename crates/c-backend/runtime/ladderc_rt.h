@@ -96,6 +96,8 @@ extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set
 extern uint64_t ladderc_cycle;   /* the current cycle number, from 0 */
 extern const char *ladderc_null_ref_site; /* where the first NULL reference was dereferenced */
 extern const char *ladderc_mem_site;      /* where the first memory function count was clipped */
+extern const char *ladderc_bounds_site;   /* where the first array index out of range was used */
+extern int64_t ladderc_bounds_at[3];       /* that index, and the lower and upper bounds it missed */
 extern const char *ladderc_pointer_site;  /* where the first pointer outside its variable was dereferenced */
 
 /* The loop guard. Every jump back in the generated code (the end of a WHILE, REPEAT or FOR pass, an IL
@@ -340,9 +342,19 @@ static inline IEC_INT ladderc_abs_IEC_INT(IEC_INT a) { return a < 0 ? ladderc_ne
 static inline IEC_DINT ladderc_abs_IEC_DINT(IEC_DINT a) { return a < 0 ? ladderc_neg_IEC_DINT(a) : a; }
 static inline IEC_LINT ladderc_abs_IEC_LINT(IEC_LINT a) { return a < 0 ? ladderc_neg_IEC_LINT(a) : a; }
 
-/* The zero-based offset of index i in lo..hi; out of range gives 0 and sets LADDERC_ERR_BOUNDS. */
-static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi) {
-    if (i < lo || i > hi) { ladderc_errors |= LADDERC_ERR_BOUNDS; return 0; }
+/* The zero-based offset of index i in lo..hi; out of range gives 0 and sets LADDERC_ERR_BOUNDS,
+ * keeping the site (the access as written, its POU and line), the index and the bounds of the first. */
+static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi, const char *site) {
+    if (i < lo || i > hi) {
+        if (!(ladderc_errors & LADDERC_ERR_BOUNDS)) {
+            ladderc_bounds_site = site;
+            ladderc_bounds_at[0] = i;
+            ladderc_bounds_at[1] = lo;
+            ladderc_bounds_at[2] = hi;
+        }
+        ladderc_errors |= LADDERC_ERR_BOUNDS;
+        return 0;
+    }
     return (size_t)((uint64_t)i - (uint64_t)lo);
 }
 

@@ -68,6 +68,62 @@ pub struct EmbeddedFunction {
 pub struct Options {
     /// Static-library functions (the IL method of paper A) put into `embedded.c`.
     pub embedded: Vec<EmbeddedFunction>,
+    /// The sources' lines, so that a run-time error names the line of its first site (`temps[i] in
+    /// Main at main.st:12`); empty: the sites name the access and the POU only.
+    pub lines: SourceLines,
+}
+
+/// The file name, the text and the line starts of each source file, by [`diagnostics::FileId`]:
+/// what the generator needs to name a site in the generated C (its line, and an expression the
+/// lowering replaced by a temporary as the user wrote it). Only the file's name is kept (not its
+/// folders), so the C does not depend on where the project lies.
+#[derive(Debug, Clone, Default)]
+pub struct SourceLines {
+    files: Vec<SourceText>,
+}
+
+#[derive(Debug, Clone)]
+struct SourceText {
+    name: String,
+    text: String,
+    starts: Vec<usize>,
+}
+
+impl SourceLines {
+    /// The lines of every file of `map`.
+    pub fn of(map: &diagnostics::SourceMap) -> Self {
+        SourceLines {
+            files: map
+                .files()
+                .map(|(_, f)| SourceText {
+                    name: std::path::Path::new(&f.name)
+                        .file_name()
+                        .map(|n| n.to_string_lossy().into_owned())
+                        .unwrap_or_else(|| f.name.clone()),
+                    text: f.text.clone(),
+                    starts: f.line_starts().to_vec(),
+                })
+                .collect(),
+        }
+    }
+
+    /// `file:line` of the start of `span` (1-based line), when its file is known.
+    pub fn locate(&self, span: diagnostics::Span) -> Option<String> {
+        let f = self.files.get(span.file.0 as usize)?;
+        let at = span.start as usize;
+        let line = match f.starts.binary_search(&at) {
+            Ok(l) => l,
+            Err(l) => l.checked_sub(1)?,
+        };
+        Some(format!("{}:{}", f.name, line + 1))
+    }
+
+    /// The text of `span` when it is a short piece of one line (at most 60 bytes), as written.
+    pub fn text(&self, span: diagnostics::Span) -> Option<&str> {
+        let f = self.files.get(span.file.0 as usize)?;
+        let t = f.text.get(span.range())?.trim();
+        (!t.is_empty() && t.len() <= 60 && !t.contains(['\n', '\r'])).then_some(t)
+    }
 }
 
 /// The generated C project: `(relative path, contents)` pairs.

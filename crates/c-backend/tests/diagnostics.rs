@@ -129,6 +129,7 @@ fn invalid_embedded_function_names_are_e2007() {
                 c_source: "void ok_name(void) {}\n".into(),
             })
             .collect(),
+        ..Default::default()
     };
     let errors = generate_errors(
         "PROGRAM main\n  LD TRUE\n  ST %QX0.0\nEND_PROGRAM\n",
@@ -168,6 +169,7 @@ END_PROGRAM
             name: "tm_add".into(),
             c_source: "void tm_add(void) {\n    uint16_t x = (uint16_t)ladderc_load(LADDERC_TM, 0, 2);\n    uint16_t y = (uint16_t)ladderc_load(LADDERC_TM, 2, 2);\n    ladderc_store(LADDERC_TM, 4, 2, (uint16_t)(x + y));\n}\n".into(),
         }],
+        ..Default::default()
     };
     let (units, model, map) = frontend(src);
     let p = generate_with(&units, &model, &map, &TargetProfile::default(), &opts);

@@ -268,24 +268,47 @@ impl Excerpts {
 }
 
 /// The diagnostics to show (at most [`max_per_file`] per file of their primary span, in order) and,
-/// per file, how many were left out.
+/// per file, how many were left out. Errors come first: a file's errors take the room before its
+/// warnings and notes, so that a rejected file always shows why (51 warnings and one error show the
+/// error and 49 warnings), and the order of what is shown stays the order given.
 fn limited<'d>(
     map: &SourceMap,
     diags: &'d [Diagnostic],
     max: usize,
 ) -> (Vec<&'d Diagnostic>, Vec<String>) {
-    let mut shown: Vec<usize> = Vec::new();
+    // index 0: no span; file i + 1
+    let file = |d: &Diagnostic| d.span.map_or(0, |s| s.file.0 as usize + 1);
+    let mut errors: Vec<usize> = Vec::new();
+    for d in diags.iter().filter(|d| d.severity == Severity::Error) {
+        let k = file(d);
+        if errors.len() <= k {
+            errors.resize(k + 1, 0);
+        }
+        errors[k] += 1;
+    }
+    let mut shown_errors: Vec<usize> = Vec::new();
+    let mut shown_others: Vec<usize> = Vec::new();
     let mut left: Vec<usize> = Vec::new();
     let mut keep = Vec::new();
     for d in diags {
-        // index 0: no span; file i + 1
-        let k = d.span.map_or(0, |s| s.file.0 as usize + 1);
-        if shown.len() <= k {
-            shown.resize(k + 1, 0);
+        let k = file(d);
+        if left.len() <= k {
+            shown_errors.resize(k + 1, 0);
+            shown_others.resize(k + 1, 0);
             left.resize(k + 1, 0);
         }
-        if shown[k] < max {
-            shown[k] += 1;
+        let room = if d.severity == Severity::Error {
+            shown_errors[k] < max
+        } else {
+            let errors = errors.get(k).copied().unwrap_or(0);
+            shown_others[k] < max.saturating_sub(errors)
+        };
+        if room {
+            if d.severity == Severity::Error {
+                shown_errors[k] += 1;
+            } else {
+                shown_others[k] += 1;
+            }
             keep.push(d);
         } else {
             left[k] += 1;

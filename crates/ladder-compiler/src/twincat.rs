@@ -367,15 +367,17 @@ fn task(el: &Element) -> TcTask {
 }
 
 /// The first word of a declaration, upper case, after blanks, pragmas (`{attribute ...}`) and
-/// comments (`(* *)`, `//`).
+/// comments (`(* *)`, which nest as in IEC 61131-3 edition 3 and TwinCAT, `/* */`, `//`).
 fn first_keyword(text: &str) -> String {
     let mut rest = text;
     loop {
         rest = rest.trim_start();
         if let Some(r) = rest.strip_prefix('{') {
             rest = r.find('}').map_or("", |e| &r[e + 1..]);
-        } else if let Some(r) = rest.strip_prefix("(*") {
-            rest = r.find("*)").map_or("", |e| &r[e + 2..]);
+        } else if rest.starts_with("(*") {
+            rest = after_nested_comment(rest);
+        } else if let Some(r) = rest.strip_prefix("/*") {
+            rest = r.find("*/").map_or("", |e| &r[e + 2..]);
         } else if let Some(r) = rest.strip_prefix("//") {
             rest = r.find('\n').map_or("", |e| &r[e..]);
         } else {
@@ -386,6 +388,31 @@ fn first_keyword(text: &str) -> String {
         .next()
         .unwrap_or("")
         .to_ascii_uppercase()
+}
+
+/// The text after the `(* ... *)` comment `text` starts with, comments inside it nested (`(* a (* b
+/// *) c *)` ends after `c *)`); empty when it does not end.
+fn after_nested_comment(text: &str) -> &str {
+    let b = text.as_bytes();
+    let mut depth = 0usize;
+    let mut i = 0;
+    while i + 1 < b.len() {
+        match (b[i], b[i + 1]) {
+            (b'(', b'*') => {
+                depth += 1;
+                i += 2;
+            }
+            (b'*', b')') => {
+                depth -= 1;
+                i += 2;
+                if depth == 0 {
+                    return &text[i..];
+                }
+            }
+            _ => i += 1,
+        }
+    }
+    ""
 }
 
 /// Copies a `<POU>`: its declaration and body, its methods (and properties, which the ST front end
@@ -752,6 +779,12 @@ VAR n : INT; END_VAR
         assert!(d.message.contains("in SFC"), "{}", d.message);
         assert!(object_source(FileId(0), "<project/>").is_none());
         assert_eq!(first_keyword("(* c *) // x\n {a 'b'} program P"), "PROGRAM");
+        // nested comments (TwinCAT, edition 3) and C-style ones
+        assert_eq!(
+            first_keyword("(* a\n(* b *)\nc *)\n/* d */ FUNCTION_BLOCK F"),
+            "FUNCTION_BLOCK"
+        );
+        assert_eq!(first_keyword("(* (* never closed *)"), "");
     }
 
     #[test]

@@ -118,6 +118,68 @@ pub fn solution(session: &Session, inputs: &[PathBuf]) -> Option<PathBuf> {
     None
 }
 
+/// The PLC project the inputs name (a `.plcproj`, or a folder, `.sln` or `.tsproj` whose folder
+/// holds exactly one), whose instance's links are the ones to read.
+pub fn plc_project(session: &Session, inputs: &[PathBuf]) -> Option<PathBuf> {
+    if !session.disk {
+        return None;
+    }
+    let first = inputs.first()?;
+    if crate::twincat::has_extension(first, "plcproj") {
+        return Some(first.clone());
+    }
+    let dir = if crate::twincat::has_extension(first, "sln")
+        || crate::twincat::has_extension(first, "tsproj")
+    {
+        match first.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        }
+    } else {
+        first.clone()
+    };
+    if !dir.is_dir() {
+        return None;
+    }
+    let mut found = Vec::new();
+    crate::twincat::find_projects(&dir, 0, &mut found);
+    (found.len() == 1).then(|| found.pop()).flatten()
+}
+
+/// The name the solution gives the PLC project `plc` (`<Plc><Project Name="A"
+/// PrjFilePath="A\A.plcproj">`, or the same in the `.xti` a `<Project File=...>` names): the
+/// second part of its instance's owner name in `<Mappings>` (`TIPC^A^A Instance`).
+fn plc_project_name(
+    root: &Element,
+    dir: &Path,
+    plc: &Path,
+    xti: &[(String, PathBuf)],
+) -> Option<String> {
+    let Ok(plc) = plc.canonicalize() else {
+        return None;
+    };
+    // relative to the .tsproj's folder (or to `_Config/PLC`, where an .xti lies)
+    let same = |rel: &str| {
+        let rel: PathBuf = rel.split(['\\', '/']).collect();
+        [dir.join(&rel), dir.join("_Config").join("PLC").join(&rel)]
+            .iter()
+            .any(|p| p.canonicalize().is_ok_and(|p| p == plc))
+    };
+    for plc_el in root.walk().filter(|e| e.name() == "Plc") {
+        for project in plc_el.children_named("Project") {
+            if let (Some(name), Some(path)) = (project.attr("Name"), project.attr("PrjFilePath")) {
+                if same(path) {
+                    return Some(name.to_string());
+                }
+            }
+        }
+    }
+    xti.iter().find_map(|(name, path)| {
+        let rel = path.to_string_lossy();
+        same(&rel).then(|| name.clone())
+    })
+}
+
 /// One NC axis as read: its name, where it is declared, its parameters.
 struct NcAxis {
     name: String,
@@ -148,7 +210,9 @@ struct Values {
 
 /// The axes of the solution `tsproj`: `None` when it has none (or errors were reported: then
 /// `session.diags` holds them).
-pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
+/// `plc`: the PLC project compiled; when the solution names it, only its instance's links are read
+/// (a solution's other PLC projects link their own `AXIS_REF`s).
+pub fn import(session: &mut Session, tsproj: &Path, plc: Option<&Path>) -> Option<AxisConfig> {
     let text = session.read_file(tsproj).ok()?;
     let text = text.strip_prefix('\u{feff}').unwrap_or(&text).to_string();
     let dir = tsproj.parent().unwrap_or(Path::new("")).to_path_buf();
@@ -222,11 +286,13 @@ pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
     if axes.is_empty() {
         return None;
     }
-    let mut links = mappings(&root, file);
     // TwinCAT 3.1 with independent project files keeps a PLC instance's links (its
-    // `<Mappings>`) in `_Config/PLC/<plc>.xti`, which `<Plc><Project File="PLC1.xti"/>` names
-    for plc in root.walk().filter(|e| e.name() == "Plc") {
-        for project in plc.children_named("Project") {
+    // `<Mappings>`) in `_Config/PLC/<plc>.xti`, which `<Plc><Project File="PLC1.xti"/>` names:
+    // each such file's project (name and path, to tell which is `plc`) and its links
+    let mut xti_projects: Vec<(String, PathBuf)> = Vec::new();
+    let mut xti_links: Vec<(Option<String>, Vec<(String, String, Span)>)> = Vec::new();
+    for plc_el in root.walk().filter(|e| e.name() == "Plc") {
+        for project in plc_el.children_named("Project") {
             let Some((name, (s, e))) = project.attr_and_range("File") else {
                 continue;
             };
@@ -239,16 +305,33 @@ pub fn import(session: &mut Session, tsproj: &Path) -> Option<AxisConfig> {
             let src = plc_arena.str(&src);
             match ladder_compiler::xml::parse(src, &plc_arena) {
                 (Some(r), None) => {
-                    for l in mappings(&r, f) {
-                        if !links
-                            .iter()
-                            .any(|(a, i, _)| *a == l.0 && i.eq_ignore_ascii_case(&l.1))
-                        {
-                            links.push(l);
+                    let own = r.walk().find(|e| e.name() == "Project").and_then(|p| {
+                        let name = p.attr("Name")?.to_string();
+                        if let Some(path) = p.attr("PrjFilePath") {
+                            xti_projects.push((name.clone(), PathBuf::from(path)));
                         }
-                    }
+                        Some(name)
+                    });
+                    xti_links.push((own, mappings(&r, f, None)));
                 }
                 _ => not_xml(session, &path, Span::new(file, s, e)),
+            }
+        }
+    }
+    let own = plc.and_then(|p| plc_project_name(&root, &dir, p, &xti_projects));
+    let mut links = mappings(&root, file, own.as_deref());
+    for (project, found) in xti_links {
+        if let (Some(own), Some(project)) = (&own, &project) {
+            if !own.eq_ignore_ascii_case(project) {
+                continue;
+            }
+        }
+        for l in found {
+            if !links
+                .iter()
+                .any(|(a, i, _)| *a == l.0 && i.eq_ignore_ascii_case(&l.1))
+            {
+                links.push(l);
             }
         }
     }
@@ -447,7 +530,13 @@ fn read_axis(
 }
 
 /// The PLC instance each NC axis is linked to: (axis name, `AXIS_REF` path, where the link is).
-fn mappings(root: &Element, file: diagnostics::FileId) -> Vec<(String, String, Span)> {
+/// `own`: the name of the PLC project compiled; links of another PLC project's instance
+/// (`TIPC^B^B Instance` while compiling A) are left out.
+fn mappings(
+    root: &Element,
+    file: diagnostics::FileId,
+    own: Option<&str>,
+) -> Vec<(String, String, Span)> {
     let mut out = Vec::new();
     let Some(m) = root.walk().find(|e| e.name() == "Mappings") else {
         return out;
@@ -458,6 +547,17 @@ fn mappings(root: &Element, file: diagnostics::FileId) -> Vec<(String, String, S
                 owner_a.attr("Name").unwrap_or(""),
                 owner_b.attr("Name").unwrap_or(""),
             );
+            // the PLC side is `TIPC^<project>^<instance>`, on either owner
+            let other_plc = [a, b].into_iter().any(|n| {
+                let mut parts = n.split('^');
+                parts.next() == Some("TIPC")
+                    && own.is_some_and(|own| {
+                        parts.next().is_some_and(|p| !p.eq_ignore_ascii_case(own))
+                    })
+            });
+            if other_plc {
+                continue;
+            }
             // the NC side is `TINC^<task>^Axes^[folder^]<axis>`, on either owner
             let axis = [a, b]
                 .into_iter()

@@ -1233,8 +1233,9 @@ impl Session {
                 // a TwinCAT solution's NC axes (`_Config/NC`), else none
                 _ => {
                     let before = self.diags.error_count();
+                    let plc = crate::nc_axes::plc_project(self, paths);
                     let imported = crate::nc_axes::solution(self, paths)
-                        .and_then(|tsproj| crate::nc_axes::import(self, &tsproj));
+                        .and_then(|tsproj| crate::nc_axes::import(self, &tsproj, plc.as_deref()));
                     if self.diags.error_count() > before {
                         return None;
                     }
@@ -1294,7 +1295,10 @@ impl Session {
             return None;
         }
         let embedded = embedded_functions(lowered);
-        let copts = c_backend::Options { embedded };
+        let copts = c_backend::Options {
+            embedded,
+            lines: c_backend::SourceLines::of(&self.map),
+        };
         let ext = c_backend::Extensions {
             motion: lowered
                 .uses_blocks

@@ -12,7 +12,6 @@
 
 use super::scope::{Place, Scope};
 use super::Gen;
-use crate::mangle;
 use il_frontend::ast::{Accessor, MemCall, MemFunc, VarRef};
 use il_frontend::sema::{Elementary, Type};
 
@@ -22,11 +21,7 @@ impl Gen<'_> {
         let (dst, d_room) = self.mem_object(scope, &m.dest, m.through_pointer[0], m)?;
         let (dst, d_room) = self.offset(scope, dst, d_room, m.offsets[0].as_ref())?;
         let count = self.value(scope, &m.count, &Type::Elementary(Elementary::Ulint))?;
-        let pou = scope
-            .pou
-            .map(|(p, _)| p.name.clone())
-            .unwrap_or_else(|| "the configuration".into());
-        let site = mangle::c_string(cfmt!("{} in {pou}", m.func.name()).as_bytes());
+        let site = self.site(scope, m.func.name(), m.span);
         match m.func {
             MemFunc::Set => {
                 let fill = m.fill.as_ref()?;

@@ -73,9 +73,27 @@ pub struct Gen<'a> {
     outside_area: HashMap<Option<Span>, (usize, u64, String)>,
     /// The scratch objects of NULL dereferences (see `refs`): (C type, declaration).
     pub(super) null_refs: Vec<(String, String)>,
+    /// The sources' lines, for the sites of run-time errors (see [`Gen::site`]).
+    pub(super) lines: &'a crate::SourceLines,
 }
 
 impl<'a> Gen<'a> {
+    /// The C string literal naming the site of a run-time error (the first one is reported at the
+    /// end of the run): `what` (the access, as written), the POU it is in, and its source line
+    /// when known (`temps[i] in Main at main.st:12`). The user's text is escaped by
+    /// [`mangle::c_string`].
+    pub(super) fn site(&self, scope: &Scope, what: &str, span: Span) -> String {
+        let pou = scope
+            .pou
+            .map(|(p, _)| p.name.as_str())
+            .unwrap_or("the configuration");
+        let text = match self.lines.locate(span) {
+            Some(at) => cfmt!("{what} in {pou} at {at}"),
+            None => cfmt!("{what} in {pou}"),
+        };
+        mangle::c_string(text.as_bytes())
+    }
+
     /// A user POU's variable by name (case-insensitive).
     pub fn pou_var(&self, id: PouId, name: &str) -> Option<&'a il_frontend::sema::Variable> {
         let model: &'a Model = self.model;
@@ -178,6 +196,7 @@ pub fn generate(
         hier: hier::Slots::default(),
         outside_area: HashMap::new(),
         null_refs: Vec::new(),
+        lines: &opts.lines,
     };
     g.check_embedded(opts);
     g.check_methods();

@@ -19,7 +19,7 @@
 
 use super::scope::{Place, Scope};
 use super::Gen;
-use crate::{ctypes, mangle};
+use crate::ctypes;
 use diagnostics::Span;
 use il_frontend::ast::{Accessor, Operand, RefOperand, SizeOfOperand, VarRef};
 use il_frontend::sema::{Elementary, Type};
@@ -81,14 +81,14 @@ impl Gen<'_> {
             else {
                 continue;
             };
-            return Some(self.moved_pointer(
-                scope,
-                &lv,
-                &target,
-                index,
-                &v.accessors[k + 1..],
-                v.span,
-            ));
+            let rest = &v.accessors[k + 1..];
+            // an index after the pointer is checked against its array (named as written)
+            let site = if rest.iter().any(|a| matches!(a, Accessor::Index(_))) {
+                self.site(scope, &il_frontend::print::var_ref_text(v), v.span)
+            } else {
+                String::new()
+            };
+            return Some(self.moved_pointer(scope, &lv, &target, index, rest, v.span, &site));
         }
         None
     }
@@ -103,6 +103,7 @@ impl Gen<'_> {
         index: Option<&Operand>,
         rest: &[Accessor],
         span: Span,
+        site: &str,
     ) -> Option<String> {
         let base = ctypes::base(self.model, target)?;
         let dims = ctypes::dims(target);
@@ -125,7 +126,7 @@ impl Gen<'_> {
                 };
                 at = match acc {
                     Accessor::Field(f) => self.field(&l, &ty, f)?,
-                    Accessor::Index(ix) => self.index(scope, &l, &ty, ix, span)?,
+                    Accessor::Index(ix) => self.index(scope, &l, &ty, ix, span, site)?,
                     Accessor::Deref(d) => {
                         self.unsupported(*d, "this address");
                         return None;
@@ -224,18 +225,14 @@ impl Gen<'_> {
             accessors: v.accessors.iter().take(at + 1).cloned().collect(),
             span: v.span,
         });
-        let pou = scope
-            .pou
-            .map(|(p, _)| p.name.clone())
-            .unwrap_or_else(|| "the configuration".into());
         // the hidden, always NULL reference a call through an unassigned interface variable reads
         // (il_frontend::st::interface_vars): named by the variable, not by the hidden field
         let unassigned = cfmt!(".{}^", il_frontend::st::interface_vars::UNASSIGNED);
-        let site = match path.strip_suffix(unassigned.as_str()) {
-            Some(itf) => cfmt!("a call through the unassigned interface {itf} in {pou}"),
-            None => cfmt!("{path} in {pou}"),
+        let what = match path.strip_suffix(unassigned.as_str()) {
+            Some(itf) => cfmt!("a call through the unassigned interface {itf}"),
+            None => path,
         };
-        let site = mangle::c_string(site.as_bytes());
+        let site = self.site(scope, &what, v.span);
         let r = match index {
             None => lv.to_string(),
             Some(i) => {

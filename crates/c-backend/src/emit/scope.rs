@@ -458,7 +458,8 @@ impl Gen<'_> {
                         self.unsupported(r.span, "fields of a located array");
                         return None;
                     };
-                    place = self.located_index(scope, loc, &ty, idx, r.span)?;
+                    let site = self.index_site(scope, r, at);
+                    place = self.located_index(scope, loc, &ty, idx, r.span, &site)?;
                     continue;
                 }
                 Place::Loc { .. } | Place::Part { .. } => {
@@ -472,7 +473,10 @@ impl Gen<'_> {
                 Accessor::Index(idx) if matches!(ty, Type::Ref(_)) && idx.len() == 1 => {
                     self.deref_place(scope, &lv, &ty, r, at, r.span, idx.first())?
                 }
-                Accessor::Index(idx) => self.index(scope, &lv, &ty, idx, r.span)?,
+                Accessor::Index(idx) => {
+                    let site = self.index_site(scope, r, at);
+                    self.index(scope, &lv, &ty, idx, r.span, &site)?
+                }
                 Accessor::Deref(span) => self.deref_place(scope, &lv, &ty, r, at, *span, None)?,
             };
         }
@@ -543,6 +547,9 @@ impl Gen<'_> {
         None
     }
 
+    /// `lv[i, ...]`: each index checked against its bounds by `ladderc_index` (out of range: the
+    /// first element, and the bounds flag with `site`, a C string literal naming the access, kept
+    /// for the first one).
     pub(super) fn index(
         &mut self,
         scope: &Scope,
@@ -550,6 +557,7 @@ impl Gen<'_> {
         ty: &Type,
         idx: &[Operand],
         span: Span,
+        site: &str,
     ) -> Option<Place> {
         let mut lv = lv.to_string();
         let mut ty = ty.clone();
@@ -566,7 +574,7 @@ impl Gen<'_> {
                 };
                 let v = self.value(scope, op, &Type::Elementary(E::Lint))?;
                 lv = cfmt!(
-                    "{lv}[ladderc_index({v}, {}, {})]",
+                    "{lv}[ladderc_index({v}, {}, {}, {site})]",
                     clamp64(d.lower),
                     clamp64(d.upper)
                 );
@@ -575,6 +583,39 @@ impl Gen<'_> {
             ty = *element;
         }
         Some(Place::Mem { lv, ty })
+    }
+
+    /// The site of the index at accessor `at` of `r`: `r` up to that index, as written (an index
+    /// expression the ST lowering computed into a temporary, `temps[_ST_T1]`, is shown as its
+    /// source text, `temps[i + 1]`).
+    fn index_site(&self, scope: &Scope, r: &VarRef, at: usize) -> String {
+        let as_written = |op: &Operand| match op {
+            Operand::Var(v) if v.accessors.is_empty() && is_temporary(&v.base.name) => {
+                match self.lines.text(v.base.span) {
+                    Some(text) => Operand::Var(VarRef {
+                        base: il_frontend::ast::Ident::new(text.to_string(), v.base.span),
+                        accessors: Default::default(),
+                        span: v.span,
+                    }),
+                    None => op.clone(),
+                }
+            }
+            _ => op.clone(),
+        };
+        let upto = VarRef {
+            base: r.base.clone(),
+            accessors: r
+                .accessors
+                .iter()
+                .take(at + 1)
+                .map(|a| match a {
+                    Accessor::Index(ix) => Accessor::Index(ix.iter().map(as_written).collect()),
+                    other => other.clone(),
+                })
+                .collect(),
+            span: r.span,
+        };
+        self.site(scope, &il_frontend::print::var_ref_text(&upto), r.span)
     }
 
     /// `a[i, j]` of a located array `a` (elementary elements, see [`located_bytes`]): the element
@@ -589,6 +630,7 @@ impl Gen<'_> {
         ty: &Type,
         idx: &[Operand],
         span: Span,
+        site: &str,
     ) -> Option<Place> {
         let Type::Array { dims, element } = ty else {
             return None;
@@ -602,7 +644,7 @@ impl Gen<'_> {
         for (k, (d, op)) in dims.iter().zip(idx).enumerate() {
             let v = self.value(scope, op, &Type::Elementary(E::Lint))?;
             let i = cfmt!(
-                "ladderc_index({v}, {}, {})",
+                "ladderc_index({v}, {}, {}, {site})",
                 clamp64(d.lower),
                 clamp64(d.upper)
             );
@@ -961,4 +1003,13 @@ fn part_mask(width: u32) -> String {
     } else {
         format!("((uint64_t){:#x}u)", (1u64 << width) - 1)
     }
+}
+
+/// Whether `name` is a temporary of the ST lowering (`_ST_T3`, `_STX_T1` inside LD/FBD, `_ITF_T2`;
+/// see `il_frontend::st::lower`).
+fn is_temporary(name: &str) -> bool {
+    ["_ST_T", "_STX_T", "_ITF_T"].iter().any(|p| {
+        name.strip_prefix(p)
+            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+    })
 }

@@ -95,7 +95,8 @@ fn conversion(from: &Type, to: &Type) -> Option<(Elementary, Elementary)> {
 }
 
 /// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest (halves
-/// to even) and saturates, LREAL to REAL overflows to an infinity, TIME to/from numbers counts milliseconds, anything to BOOL is `<> 0`.
+/// to even) and saturates, LREAL to REAL overflows to an infinity, TIME, LTIME and TOD to/from numbers
+/// count milliseconds, DT and DATE seconds since 1970-01-01, anything to BOOL is `<> 0`.
 pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     if f == t {
         return x.to_string();
@@ -113,6 +114,9 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
             return cfmt!("(({ct})({x}))");
         }
         if time_like(t) {
+            if matches!(t, E::Dt | E::Date) {
+                return cfmt!("(({ct})ladderc_ms_to_time((double)({x}) * 1e3))");
+            }
             return cfmt!("(({ct})ladderc_ms_to_time((double)({x})))");
         }
         return real_to_int(&cfmt!("(double)({x})"), t);
@@ -125,19 +129,32 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
                 _ => cfmt!("(({ct})({x}))"),
             };
         }
+        let (unit, unit_real) = number_unit(f);
         if t.is_real() {
-            return cfmt!("(({ct})((double)({x}) / 1e6))");
+            return cfmt!("(({ct})((double)({x}) / {unit_real}))");
         }
-        return int_to_int(&cfmt!("(({x}) / INT64_C(1000000))"), t);
+        return int_to_int(&cfmt!("(({x}) / {unit})"), t);
     }
     // f is an integer, a bit string or BOOL
     if t.is_real() {
         return cfmt!("(({ct})({x}))");
     }
     if time_like(t) {
-        return cfmt!("(({ct})ladderc_mul_IEC_LINT((IEC_LINT)({x}), INT64_C(1000000)))");
+        let (unit, _) = number_unit(t);
+        return cfmt!("(({ct})ladderc_mul_IEC_LINT((IEC_LINT)({x}), {unit}))");
     }
     int_to_int(x, t)
+}
+
+/// The nanoseconds of one unit of the number a duration or date converts to and from: milliseconds
+/// for TIME, LTIME and TOD, seconds for DT and DATE (since 1970-01-01), as CODESYS, TwinCAT and
+/// OSCAT count them (`DT_TO_UDINT`, `TOD_TO_DWORD(t) / 3600000` for the hour); as a C integer and
+/// as a C double.
+fn number_unit(e: Elementary) -> (&'static str, &'static str) {
+    match e {
+        E::Dt | E::Date => ("INT64_C(1000000000)", "1e9"),
+        _ => ("INT64_C(1000000)", "1e6"),
+    }
 }
 
 fn int_to_int(x: &str, t: Elementary) -> String {

@@ -82,10 +82,14 @@ static void conversions(void) {
     CHECK(ladderc_ms_to_time(1.5) == 1500000);
     CHECK(ladderc_dt_to_tod(-1) == LADDERC_NS_PER_DAY - 1);
     CHECK(ladderc_dt_to_date(LADDERC_NS_PER_DAY + 5) == LADDERC_NS_PER_DAY);
-    CHECK(ladderc_index(5, 1, 10) == 4);
+    CHECK(ladderc_index(5, 1, 10, "a[i] in P") == 4);
     ladderc_errors = 0;
-    CHECK(ladderc_index(11, 1, 10) == 0);
+    CHECK(ladderc_index(11, 1, 10, "a[i] in P") == 0);
     CHECK(ladderc_errors & LADDERC_ERR_BOUNDS);
+    /* the first out-of-range index is the one reported */
+    CHECK(ladderc_index(-3, 0, 4, "b[j] in Q") == 0);
+    CHECK(strcmp(ladderc_bounds_site, "a[i] in P") == 0);
+    CHECK(ladderc_bounds_at[0] == 11 && ladderc_bounds_at[1] == 1 && ladderc_bounds_at[2] == 10);
     CHECK(ladderc_next_due(0, 0, 20) == 20);
     CHECK(ladderc_next_due(20, 30, 20) == 40);
     CHECK(ladderc_next_due(20, 65, 20) == 80);

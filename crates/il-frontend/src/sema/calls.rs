@@ -511,11 +511,19 @@ impl Body<'_, '_> {
                         "declare an instance (`T1 : {};`) and call it with its inputs: `CAL T1(...)` in IL, `T1(...);` in ST",
                         name.name
                     ));
-            } else {
+            } else if self.a.silent
+                || self.a.internal_accessed.insert((
+                    self.pou.0,
+                    format!("unknown function {}", name.key()),
+                    String::new(),
+                ))
+            {
+                // one E1019 per POU and name, at its first call (as an undeclared name's E1001):
+                // a missing library function called 100 times is one cause
                 self.a
                     .error(code::E1019, name.span, format!("unknown function `{}`", name.name))
                     .label("no such function")
-                    .hint("use an IEC standard function, a conversion X_TO_Y, or declare the FUNCTION");
+                    .hint("use an IEC standard function, a conversion X_TO_Y, or declare the FUNCTION (its other calls in this POU are not reported)");
             }
             self.args_unchecked(args);
             st.cr.fresh = None;

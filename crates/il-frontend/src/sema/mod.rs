@@ -58,6 +58,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         enum_counter: 0,
         alias_chain_reported: false,
         undeclared_at: std::collections::HashSet::new(),
+        written_inputs: std::collections::HashSet::new(),
         internal_accessed: std::collections::HashSet::new(),
         operator_functions: [None; 32],
         wide_chars_at: std::collections::HashSet::new(),
@@ -134,6 +135,9 @@ pub(crate) struct Analyzer<'d> {
     pub(crate) loose_enum_pous: std::collections::HashSet<PouId>,
     /// The POUs where W1437 (an FB instance copied whole) was reported: once per POU.
     pub(crate) copying_instance_pous: std::collections::HashSet<PouId>,
+    /// The declarations of the inputs whose W1411 (written inside their POU) was reported: once per
+    /// input, at its first write.
+    pub(crate) written_inputs: std::collections::HashSet<crate::Span>,
 }
 
 impl Analyzer<'_> {

@@ -224,6 +224,10 @@ impl Body<'_, '_> {
             }
             // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)
             // accept it and write the POU's own copy of the input: so does ladderc, with a warning
+            // at the first write of each input (the others write the same copy)
+            if self.a.silent || !self.a.written_inputs.insert(decl) {
+                return;
+            }
             drop(
                 self.a
                     .warning(

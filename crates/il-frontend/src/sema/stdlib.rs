@@ -474,8 +474,10 @@ fn conv_type(name: &str) -> Option<Type> {
 }
 
 /// Whether `X_TO_Y` exists: numbers, bit strings and BOOL convert among themselves; TIME/LTIME convert
-/// with each other and with integers, reals, bit strings and BOOL (milliseconds); DT converts to DATE and TOD; everything elementary
-/// converts to and from STRING/WSTRING.
+/// with each other and with integers, reals, bit strings and BOOL (milliseconds); DT converts to
+/// DATE and TOD; DT, DATE and TOD convert with numbers and bit strings (CODESYS, TwinCAT, matiec,
+/// OSCAT: DT and DATE as seconds since 1970-01-01, TOD as milliseconds since midnight);
+/// everything elementary converts to and from STRING/WSTRING.
 pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
     let (f, t) = (from.elementary(), to.elementary());
     match (f, t) {
@@ -489,6 +491,8 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
                 || (f.is_duration() && (t.is_duration() || plain(t)))
                 || (t.is_duration() && plain(f))
                 || (f == E::Dt && matches!(t, E::Date | E::Tod | E::Dt))
+                || (f.is_date() && plain(t))
+                || (t.is_date() && plain(f))
                 || (f == t)
         }
     }

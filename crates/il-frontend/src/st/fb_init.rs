@@ -364,6 +364,11 @@ pub fn add_init_calls(
             // (an unknown type, or a block not compiled: their own error is reported)
             continue;
         }
+        if !has && a.args.is_empty() && a.elements.is_empty() {
+            // `c : FB_Count();` in a METHOD's VAR (as in a program's): the empty list of a block
+            // without FB_init passes nothing (TwinCAT accepts it wherever the instance is)
+            continue;
+        }
         // a METHOD's own instance (struckig's `p : Randomizer(_positionDist);`): CODESYS makes
         // it again, FB_init included, at each call of the method
         let in_method = pending.iter().flat_map(|pb| &pb.methods).any(|m| {
