@@ -65,6 +65,7 @@ pub mod block_temps;
 pub mod br_edges;
 pub mod br_programs;
 pub mod cli;
+pub mod codesys_v23;
 pub mod depfile;
 pub mod encoding;
 pub mod fuzzing;

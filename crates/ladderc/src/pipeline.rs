@@ -452,6 +452,27 @@ impl Session {
             }
             // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
             let src = &self.map.get(file).text;
+            // a CODESYS V2.3 export (`.EXP`): its sections without code skipped (W1442), its task
+            // configuration read as the project's tasks
+            let v23_text = if detected && file_lang != Lang::Xml {
+                crate::codesys_v23::read(file, src)
+            } else {
+                None
+            };
+            let (file_lang, v23_text) = match v23_text {
+                Some(export) => {
+                    self.diags.extend(export.notes);
+                    twincat_tasks.extend(export.tasks.into_iter().map(|t| (file, t)));
+                    if crate::codesys_v23::no_code(&export.text) {
+                        continue;
+                    }
+                    (
+                        il_frontend::st::file::detect(&export.text),
+                        Some(export.text),
+                    )
+                }
+                None => (file_lang, None),
+            };
             // (not for an OpenPLC Editor v4 graphical POU: its E1073 below says what it is)
             if detected && openplc_v4_json_body(src).is_none() {
                 self.diags.push(
@@ -512,7 +533,7 @@ impl Session {
             };
             let (file_lang, src) = match (&v2_text, &tc_text) {
                 (Some(text), _) | (None, Some(text)) => (Lang::St, text.as_str()),
-                (None, None) => (file_lang, src.as_str()),
+                (None, None) => (file_lang, v23_text.as_deref().unwrap_or(src.as_str())),
             };
             if file_lang == Lang::Xml && defer_xml {
                 deferred_xml.push((units.len(), file, beremiz_dir.clone()));
@@ -570,7 +591,10 @@ impl Session {
                         file,
                         implicit: implicit.to_string(),
                         lang: file_lang,
-                        text: v2_text.clone().or_else(|| tc_text.clone()),
+                        text: v2_text
+                            .clone()
+                            .or_else(|| tc_text.clone())
+                            .or_else(|| v23_text.clone()),
                         own: il_frontend::parser::integer_constants(&unit, &local, true),
                         diags: local,
                     });

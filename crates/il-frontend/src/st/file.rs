@@ -340,6 +340,52 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 });
                 i = j;
             }
+            // CODESYS V2.3's export: a POU's actions after its END_..., each `ACTION name:` ...
+            // `END_ACTION`, without an ACTIONS block: read as one ACTIONS block of the POU before
+            "ACTION"
+                if !out.is_empty()
+                    && toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident)
+                    && toks.get(i + 2).is_some_and(|t| t.tok == Tok::Colon) =>
+            {
+                let start = t.range.clone();
+                let mut action_list = Vec::new();
+                let mut k = i;
+                let mut end = start.end;
+                while k < n
+                    && is_word(src, &toks[k], "ACTION")
+                    && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Ident)
+                    && toks.get(k + 2).is_some_and(|t| t.tok == Tok::Colon)
+                {
+                    let name_tok = &toks[k + 1];
+                    let text_start = toks[k + 2].range.end;
+                    let e = skip_to(k + 3, "END_ACTION");
+                    let text_end = toks[e - 1].range.start.max(text_start);
+                    end = toks[e - 1].range.end;
+                    action_list.push((
+                        word(src, name_tok).to_string(),
+                        name_tok.range.clone(),
+                        text_start..text_end,
+                    ));
+                    k = e;
+                }
+                out.push(PouText {
+                    name: "ACTIONS".into(),
+                    name_range: start.clone(),
+                    body: start.start..end,
+                    lang: Lang::Il,
+                    sfc: None,
+                    oop: None,
+                    methods: Vec::new(),
+                    properties: Vec::new(),
+                    actions: Some(start),
+                    action_list,
+                    modifier: None,
+                    heritage: None,
+                    header_semi: None,
+                    interface: None,
+                });
+                i = k;
+            }
             "INTERFACE" if toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident) => {
                 let start = t.range.clone();
                 let name_tok = &toks[i + 1];
@@ -418,6 +464,15 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 let Some(name_tok) = toks.get(i).filter(|t| t.tok == Tok::Ident) else {
                     continue;
                 };
+                // `... of this function` then `FUNCTION Twice : INT`: a word of stray text before
+                // a POU is no POU whose name is the next POU's keyword
+                if ["PROGRAM", "FUNCTION", "FUNCTION_BLOCK"]
+                    .iter()
+                    .any(|k| is_word(src, name_tok, k))
+                {
+                    stray.push(i - 1);
+                    continue;
+                }
                 let name = word(src, name_tok).to_string();
                 let name_range = name_tok.range.clone();
                 i += 1;
@@ -912,14 +967,38 @@ pub fn detect(src: &str) -> Lang {
     if t.starts_with('<') {
         return Lang::Xml;
     }
-    let pous = scan(src);
+    let (toks, problems) = lex(src);
+    let (pous, stray) = scan_tokens(src, &toks);
     if pous.iter().any(|p| p.lang == Lang::St)
-        || (pous.is_empty() && lex(src).1.iter().any(|p| matches!(p, Problem::Pragma(_))))
+        || (pous.is_empty() && problems.iter().any(|p| matches!(p, Problem::Pragma(_))))
+        || (pous.is_empty() && declarations_only(src, &toks, &stray))
     {
         Lang::St
     } else {
         Lang::Il
     }
+}
+
+/// Whether a text without POUs holds only declarations (`VAR_GLOBAL` lists, `TYPE` blocks, a
+/// `NAMESPACE` around them: a CODESYS V2.3 GVL or DUT export): `stray` are the tokens outside
+/// every block ([`scan_tokens`]); only a namespace's words may be there.
+fn declarations_only(src: &str, toks: &[Token], stray: &[usize]) -> bool {
+    let words = toks.iter().filter(|t| !matches!(t.tok, Tok::Eof)).count();
+    words > stray.len()
+        && stray.iter().all(|&k| {
+            let t = &toks[k];
+            is_word(src, t, "NAMESPACE")
+                || is_word(src, t, "END_NAMESPACE")
+                || (t.tok == Tok::Semi && k > 0 && is_word(src, &toks[k - 1], "END_NAMESPACE"))
+                || (k > 0 && is_word(src, &toks[k - 1], "NAMESPACE") && t.tok == Tok::Ident)
+                || (t.tok == Tok::Dot || t.tok == Tok::Ident)
+                    && stray.contains(&(k.wrapping_sub(1)))
+                    && toks[..k]
+                        .iter()
+                        .rev()
+                        .take_while(|p| matches!(p.tok, Tok::Dot | Tok::Ident))
+                        .any(|p| is_word(src, p, "NAMESPACE"))
+        })
 }
 
 /// Blanks `range` of `text`: every character but line ends becomes spaces of its byte length, so
@@ -1117,6 +1196,17 @@ pub fn parse_text(
                     .iter()
                     .any(|w| is_word(src, &toks[k], w))
         });
+    // a POU keyword that is a word of stray text (`... of this function` before `FUNCTION Twice`):
+    // blanked, so the IL parser reports the stray text once and the POU after it stays whole
+    let stray_keywords: Vec<Range<usize>> = stray
+        .iter()
+        .filter(|&&k| {
+            ["PROGRAM", "FUNCTION", "FUNCTION_BLOCK"]
+                .iter()
+                .any(|w| is_word(src, &toks[k], w))
+        })
+        .map(|&k| toks[k].range.clone())
+        .collect();
     let stray: Vec<Range<usize>> = if stray_st {
         stray.iter().map(|&k| toks[k].range.clone()).collect()
     } else {
@@ -1203,6 +1293,9 @@ pub fn parse_text(
         return (unit, pending, var_config.1);
     }
     let mut text = src.to_string();
+    for r in &stray_keywords {
+        blank(&mut text, r.clone());
+    }
     let lone_member = stray.first().and_then(|first| {
         let head = src.get(first.start..)?;
         ["METHOD", "PROPERTY"].into_iter().find(|w| {
