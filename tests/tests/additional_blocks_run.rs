@@ -3,7 +3,7 @@
 //! projects instantiate without declaring them (stargieg/openplc-feed's `pid_program.st`,
 //! sofialctv/integracao-modbusTCP-IP's `INTEGRAL` in ST and in its editor's `plc.xml`: E1003 /
 //! E3009 before). ladderc compiles its own copy with the project (W1435, once); a project's own
-//! block of such a name is used instead; `RTC` (a wall clock) is not provided. Their values against
+//! block of such a name is used instead; `RTC` runs on the scan clock. Their values against
 //! matiec's library: `matiec_diff.rs`, `additional_blocks_agree_with_matiec_to_real_rounding`.
 
 mod common;
@@ -95,11 +95,10 @@ fn st_pid_ramp_and_semaphore_compute_as_annex_f() {
     assert_eq!(column(&trace, "Main.busy"), [0.0, 0.0, 1.0, 1.0, 0.0, 0.0]);
 }
 
-/// A project's own `PID` is its own (no note, its pins); `RTC`, not provided, stays one E1003
-/// that names its library; CODESYS Util's `PID` (its pins `ACTUAL`, `SET_POINT` ...) is one error
+/// A project's own `PID` is its own (no note, its pins); CODESYS Util's `PID` (its pins `ACTUAL`, `SET_POINT` ...) is one error
 /// saying so, not one per pin.
 #[test]
-fn a_declared_block_of_that_name_wins_and_rtc_is_not_provided() {
+fn a_declared_block_of_that_name_wins() {
     let (code, lines) = check_text(
         "own.st",
         "FUNCTION_BLOCK PID\nVAR_INPUT e : REAL; END_VAR\nVAR_OUTPUT y : REAL; END_VAR\n\
@@ -125,15 +124,34 @@ fn a_declared_block_of_that_name_wins_and_rtc_is_not_provided() {
         ),
         "{lines:?}"
     );
-    let (code, lines) = check_text(
+}
+
+/// `RTC` (edition 1's real-time clock, matiec's and so Beremiz's and OpenPLC's; round 23 of
+/// issue #13: an Elna/Beremiz project's `RTC` was E1003): without IN, CDT is the clock, which a
+/// simulated run starts at DT#1970-01-01-00:00:00 and moves with the scan clock; when IN rises,
+/// CDT is PDT and counts on from there; Q is IN.
+#[test]
+fn rtc_counts_from_the_preset_on_the_scan_clock() {
+    let (trace, stderr) = common::run_text(
         "clock.st",
-        "PROGRAM Main\nVAR clock : RTC; END_VAR\nclock(IN := FALSE);\nEND_PROGRAM\n",
+        "PROGRAM Main
+VAR clock : RTC; set : BOOL; n : INT;
+  at_start, at_preset, two_later, q : BOOL; END_VAR
+n := n + 1;
+set := n >= 3;
+clock(IN := set, PDT := DT#2024-05-01-12:00:00);
+at_start := clock.CDT = DT#1970-01-01-00:00:00;
+at_preset := clock.CDT = DT#2024-05-01-12:00:00;
+two_later := clock.CDT = DT#2024-05-01-12:00:00.02;
+q := clock.Q;
+END_PROGRAM
+",
+        5,
+        "Main.at_start,Main.at_preset,Main.two_later,Main.q",
     );
-    assert_eq!(code, Some(1));
-    assert_eq!(
-        lines,
-        ["clock.st:2:13: error[E1003]: unknown type `RTC` (hint: `RTC` is a block of the additional \
-          blocks of Beremiz and OpenPLC Editor (a real-time clock), which ladderc does not provide: \
-          declare it as a FUNCTION_BLOCK in the project (or give its library's source with --lib))"]
-    );
+    assert!(stderr.contains("W1435"), "{stderr}");
+    assert_eq!(column(&trace, "Main.at_start"), [1.0, 0.0, 0.0, 0.0, 0.0], "{trace}");
+    assert_eq!(column(&trace, "Main.at_preset"), [0.0, 0.0, 1.0, 0.0, 0.0], "{trace}");
+    assert_eq!(column(&trace, "Main.two_later"), [0.0, 0.0, 0.0, 0.0, 1.0], "{trace}");
+    assert_eq!(column(&trace, "Main.q"), [0.0, 0.0, 1.0, 1.0, 1.0], "{trace}");
 }

@@ -15,7 +15,10 @@
 //!   `TO`; E1019 "unknown function `NAMESPACE`");
 //! - a line of stray text before a POU in a `.st` file whose last word is `function` is one error
 //!   at the stray text, and the FUNCTION after it is read as ST (before: the function read as IL,
-//!   7 errors for one cause).
+//!   7 errors for one cause);
+//! - a POU whose body V2.3 exported in CFC (`_CFC_BODY` then `_ELEMENT` records; also `_LD_BODY`,
+//!   `_FBD_BODY`) is one E0321 at that line, the body skipped up to `END_FUNCTION_BLOCK` (before:
+//!   about 50 E0011, each record line read as IL).
 
 mod common;
 use common::*;
@@ -357,4 +360,49 @@ END_PROGRAM
         lines[0].starts_with("prose.st:1:13: error[E0011]"),
         "{lines:?}"
     );
+}
+
+/// A function block whose body is CFC in a V2.3 export: one E0321 at `_CFC_BODY` (line 9), which
+/// names the form and says to export PLCopen XML; the declarations before it are read (no other
+/// error), and a program of another export beside it still checks.
+#[test]
+fn a_graphical_body_in_an_export_is_one_error() {
+    let dir = tempfile::tempdir().unwrap();
+    write_in(
+        dir.path(),
+        "ALARM.EXP",
+        "(* @NESTEDCOMMENTS := 'Yes' *)
+(* @PATH := '' *)
+FUNCTION_BLOCK Alarm
+VAR_INPUT Status : BOOL; END_VAR
+VAR_OUTPUT Out : BOOL; END_VAR
+VAR T : TON; END_VAR
+(* @END_DECLARATION := '0' *)
+
+_CFC_BODY
+_ELEMENT
+_ID: 8
+_MACROID: -1
+_POS: 22, 3
+_TYPE: _INPUT
+_TEXT: Status AND NOT Out
+_NEGATE: 0
+_CONNECTOR: 
+_END
+_ELEMENT
+_ID: 6
+_TYPE: _BOX
+_INSTANCENAME: T
+_TYPENAME: TON
+_END
+END_FUNCTION_BLOCK
+",
+    );
+    write_in(dir.path(), "PLC_PRG.EXP", PLC_PRG_EXP);
+    let (code, _, stderr) = in_dir(dir.path(), &["check", "ALARM.EXP", "PLC_PRG.EXP"]);
+    assert_eq!(code, Some(1), "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    assert!(errors[0].starts_with("ALARM.EXP:9:1: error[E0321]"), "{stderr}");
+    assert!(errors[0].contains("CFC"), "{stderr}");
 }

@@ -4,8 +4,9 @@
 //! and every result of the trace is compared with the IEC 61131-3 result of a table of inputs
 //! (halves, negatives, limits, NaN and infinities). The rules (crates/c-backend/README.md,
 //! "Conversions"): REAL/LREAL to integers round to nearest with halves to even and saturate, NaN gives
-//! 0; TRUNC truncates toward zero and saturates; integers wrap to the target width; TIME converts from
-//! and to milliseconds; LREAL to REAL rounds to nearest and overflows to an infinity.
+//! 0; TRUNC truncates toward zero and saturates; integers wrap to the target width; TIME and TOD
+//! convert from and to milliseconds, DT and DATE seconds (a number to DATE keeps the day, to TOD the
+//! time of day); LREAL to REAL rounds to nearest and overflows to an infinity.
 
 mod common;
 use common::ladderc;
@@ -208,6 +209,28 @@ fn real_of(t: &str, x: f64) -> Want {
 fn is_time(t: &str) -> bool {
     matches!(t, "TIME" | "LTIME")
 }
+fn is_date(t: &str) -> bool {
+    matches!(t, "DATE" | "TOD" | "DT")
+}
+/// The nanoseconds of one unit of the number a date converts to and from: seconds for DT and
+/// DATE, milliseconds for TOD.
+fn date_unit(t: &str) -> i128 {
+    if t == "TOD" {
+        1_000_000
+    } else {
+        1_000_000_000
+    }
+}
+/// A DATE keeps the day (floored, wrapping as the run time's LINT arithmetic), a TOD the time
+/// of day.
+fn within_day(t: &str, ns: i128) -> i128 {
+    let day = 86_400_000_000_000i128;
+    match t {
+        "DATE" => wrap(ns - ns.rem_euclid(day), "LINT"),
+        "TOD" => ns.rem_euclid(day),
+        _ => ns,
+    }
+}
 fn is_real(t: &str) -> bool {
     matches!(t, "REAL" | "LREAL")
 }
@@ -331,6 +354,8 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
                 real_of(to, *v as f64)
             } else if is_time(to) {
                 Want::Ns(wrap(v * 1_000_000, "LINT"))
+            } else if is_date(to) {
+                Want::Text(date_text(to, within_day(to, wrap(v * date_unit(to), "LINT"))))
             } else {
                 Want::Text(wrap(*v, to).to_string())
             }
@@ -342,6 +367,9 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
                 real_of(to, *r)
             } else if is_time(to) {
                 Want::Ns(round_sat(r * 1e6, "LINT", false))
+            } else if is_date(to) {
+                let ns = round_sat(r * date_unit(to) as f64, "LINT", false);
+                Want::Text(date_text(to, within_day(to, ns)))
             } else {
                 Want::Text(round_sat(*r, to, trunc).to_string())
             }
@@ -355,6 +383,13 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
                 } else {
                     Want::Text(wrap(ns / 1_000_000, to).to_string())
                 }
+            } else if to == "BOOL" {
+                Want::Text(((*ns != 0) as u8).to_string())
+            } else if is_real(to) {
+                real_of(to, *ns as f64 / date_unit(from) as f64)
+            } else if !is_date(to) {
+                // DT and DATE count seconds, TOD milliseconds (CODESYS, TwinCAT, OSCAT)
+                Want::Text(wrap(ns / date_unit(from), to).to_string())
             } else {
                 let day = 86_400_000_000_000i128;
                 Want::Text(match to {

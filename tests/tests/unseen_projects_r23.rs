@@ -16,6 +16,8 @@
 //! - a TwinCAT solution's NC links of another PLC project's instance are not applied to the one
 //!   compiled (before: a false E1057);
 //! - a nested comment before a `.TcPOU`'s block keyword (before: E0321).
+//! - a project's FUNCTION_BLOCK named as a standard block (`TON`) is W1446 at its name (before:
+//!   silent, the standard timer replaced).
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -466,4 +468,29 @@ fn a_nested_comment_before_the_block_keyword_of_a_tcpou() {
     );
     assert_eq!(code, Some(0), "{stderr}");
     assert_eq!(column(&trace, "MAIN.r"), [42.0], "{trace}");
+}
+
+/// A project's FUNCTION_BLOCK named `TON` (ControlForge's interface stubs of the standard blocks)
+/// replaces the standard timer in the whole project, as in CODESYS: W1446 says so at its name
+/// (before: silent, and the stub's `Q` stayed FALSE with no hint why).
+#[test]
+fn a_block_named_as_a_standard_block_is_w1446() {
+    let src = "FUNCTION_BLOCK TON
+VAR_INPUT IN : BOOL; PT : TIME; END_VAR
+VAR_OUTPUT Q : BOOL; ET : TIME; END_VAR
+Q := IN;
+END_FUNCTION_BLOCK
+PROGRAM Main
+VAR t : TON; q : BOOL; END_VAR
+t(IN := TRUE, PT := T#30ms);
+q := t.Q;
+END_PROGRAM
+";
+    let (code, lines) = check_text("stubs.st", src);
+    assert_eq!(code, Some(0), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(lines[0].starts_with("stubs.st:1:16: warning[W1446]"), "{lines:?}");
+    // the project's block runs: Q follows IN at once (the standard TON would wait 30 ms)
+    let (trace, _) = run_text("stubs.st", src, 1, "Main.q");
+    assert_eq!(column(&trace, "Main.q"), [1.0], "{trace}");
 }

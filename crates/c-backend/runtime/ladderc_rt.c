@@ -767,10 +767,14 @@ static void format_clock(int64_t ns_of_day, char *buf, size_t len) {
 }
 
 static void format_datetime(const char *prefix, int64_t ns, int with_time, char *buf, size_t len) {
-    int64_t day = ns >= 0 ? ns / 86400000000000LL : -((-(ns + 1)) / 86400000000000LL) - 1;
-    int64_t rem = ns - day * 86400000000000LL, y;
+    /* floor division without overflow at the ends of the range */
+    int64_t day = ns / 86400000000000LL, rem = ns % 86400000000000LL, y;
     unsigned m, d;
     char clock[32];
+    if (rem < 0) {
+        rem += 86400000000000LL;
+        day -= 1;
+    }
     civil_from_days(day, &y, &m, &d);
     if (!with_time) {
         snprintf(buf, len, "%s#%04lld-%02u-%02u", prefix, (long long)y, m, d);

@@ -66,6 +66,33 @@ pub fn read(file: FileId, text: &str) -> Option<Export> {
     while k < ls.len() {
         let (at, line) = ls[k];
         let (w, rest) = first_word(line);
+        if let Some(form) = graphical_body(w, rest) {
+            // a POU's body in a graphical form (`_CFC_BODY` then `_ELEMENT` records): one error,
+            // the body blanked up to the POU's (or action's) end
+            let start = at + (line.len() - line.trim_start().len());
+            let mut j = k + 1;
+            while j < ls.len()
+                && !matches!(
+                    first_word(ls[j].1).0,
+                    "END_FUNCTION_BLOCK" | "END_PROGRAM" | "END_FUNCTION" | "END_ACTION"
+                )
+            {
+                j += 1;
+            }
+            let stop = ls.get(j).map_or(text.len(), |(a, _)| *a);
+            out.notes.push(
+                Diagnostic::error(
+                    code::E0321,
+                    format!("a body in {form} exported by CODESYS V2.3 (`{w}`): ladderc reads the ST and IL bodies of a text export"),
+                )
+                .at(Span::new(file, start, start + w.len()))
+                .with_primary_label("graphical body")
+                .with_hint("export the project as PLCopen XML (Project > Export PLCopenXML), whose LD, FBD and SFC bodies ladderc reads, or write the body in ST"),
+            );
+            blanked.push(start..stop);
+            k = j;
+            continue;
+        }
         let Some(&(_, end, what)) = SECTIONS.iter().find(|(s, _, _)| *s == w) else {
             k += 1;
             continue;
@@ -129,6 +156,21 @@ pub fn read(file: FileId, text: &str) -> Option<Export> {
     }
     out.text = t;
     Some(out)
+}
+
+/// The graphical language of a V2.3 body's first line (`_CFC_BODY`, `_LD_BODY`, `_FBD_BODY`,
+/// alone on its line).
+fn graphical_body(word: &str, rest: &str) -> Option<&'static str> {
+    if !rest.trim().is_empty() {
+        return None;
+    }
+    Some(match word {
+        "_CFC_BODY" => "CFC",
+        "_LD_BODY" => "LD",
+        "_FBD_BODY" => "FBD",
+        "_SFC_BODY" => "SFC",
+        _ => return None,
+    })
 }
 
 /// Whether `text` holds nothing but blanks and `(* *)` comments (the export's `(* @PATH := '' *)`

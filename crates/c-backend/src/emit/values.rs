@@ -114,10 +114,11 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
             return cfmt!("(({ct})({x}))");
         }
         if time_like(t) {
-            if matches!(t, E::Dt | E::Date) {
-                return cfmt!("(({ct})ladderc_ms_to_time((double)({x}) * 1e3))");
-            }
-            return cfmt!("(({ct})ladderc_ms_to_time((double)({x})))");
+            let (_, unit_real) = number_unit(t);
+            return within_day(
+                &cfmt!("(({ct})ladderc_real_to_int((double)({x}) * {unit_real}, INT64_MIN, INT64_MAX))"),
+                t,
+            );
         }
         return real_to_int(&cfmt!("(double)({x})"), t);
     }
@@ -141,9 +142,22 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     }
     if time_like(t) {
         let (unit, _) = number_unit(t);
-        return cfmt!("(({ct})ladderc_mul_IEC_LINT((IEC_LINT)({x}), {unit}))");
+        return within_day(
+            &cfmt!("(({ct})ladderc_mul_IEC_LINT((IEC_LINT)({x}), {unit}))"),
+            t,
+        );
     }
     int_to_int(x, t)
+}
+
+/// A number converted to DATE keeps the day (the time of day dropped: `DWORD_TO_DATE(86401)` is
+/// D#1970-01-02), to TOD the time of day, as a DATE or TOD variable holds nothing else.
+fn within_day(ns: &str, t: Elementary) -> String {
+    match t {
+        E::Date => cfmt!("ladderc_dt_to_date({ns})"),
+        E::Tod => cfmt!("ladderc_dt_to_tod({ns})"),
+        _ => ns.to_string(),
+    }
 }
 
 /// The nanoseconds of one unit of the number a duration or date converts to and from: milliseconds

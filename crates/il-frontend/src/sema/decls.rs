@@ -93,6 +93,22 @@ impl Analyzer<'_> {
                         if !self.unique_global_name(&p.name, &mut first_decl) {
                             continue;
                         }
+                        if matches!(p.kind, PouKind::FunctionBlock)
+                            && StdFb::from_name(&p.name.name).is_some()
+                        {
+                            // CODESYS and TwinCAT let a project's block hide the library's; IEC
+                            // 61131-3 reserves the standard blocks' names: said, not silent
+                            self.warning(
+                                code::W1446,
+                                p.name.span,
+                                format!(
+                                    "the FUNCTION_BLOCK `{}` hides the standard function block of that name: every `{}` instance of the project is this block",
+                                    p.name.name, p.name.name
+                                ),
+                            )
+                            .label("a standard block's name")
+                            .hint(format!("rename the block (for example `My_{}`) to keep the standard one; IEC 61131-3 reserves the names of its standard function blocks", p.name.name));
+                        }
                         let id = PouId(self.model.pous.len() as u32);
                         self.pou_names.insert(p.name.key(), id);
                         self.model.pous.push(Pou {
@@ -1776,8 +1792,6 @@ fn vendor_block(name: &str) -> Option<&'static str> {
     let u = name.to_ascii_uppercase();
     if UTIL.contains(&u.as_str()) {
         Some("CODESYS's Util library")
-    } else if u == "RTC" {
-        Some("the additional blocks of Beremiz and OpenPLC Editor (a real-time clock)")
     } else {
         None
     }

@@ -1,5 +1,6 @@
 //! The "additional function blocks" of Beremiz and OpenPLC Editor: HYSTERESIS, INTEGRAL,
-//! DERIVATIVE, RAMP and PID (IEC 61131-3 ed. 2, Annex F) and SEMA (edition 1's semaphore), which
+//! DERIVATIVE, RAMP and PID (IEC 61131-3 ed. 2, Annex F), SEMA (edition 1's semaphore) and RTC
+//! (edition 1's real-time clock, on the scan clock), which
 //! those editors offer beside the standard blocks and real OpenPLC projects instantiate
 //! (`pid0 : PID;`, a `<block typeName="INTEGRAL">`).
 //!
@@ -29,6 +30,7 @@ const BLOCKS: &[(&str, &[&str])] = &[
     ("RAMP", &[]),
     ("PID", &["INTEGRAL", "DERIVATIVE"]),
     ("SEMA", &[]),
+    ("RTC", &[]),
 ];
 
 /// Whether `name` (any case) is one of the additional blocks.
@@ -167,6 +169,7 @@ mod tests {
             "RAMP",
             "PID",
             "SEMA",
+            "RTC",
         ]);
         assert_eq!(all, SOURCE);
     }
@@ -182,7 +185,8 @@ mod tests {
                 "DERIVATIVE",
                 "RAMP",
                 "PID",
-                "SEMA"
+                "SEMA",
+                "RTC"
             ]
         );
         assert!(BLOCKS.iter().all(|(n, _)| names.iter().any(|m| m == n)));
