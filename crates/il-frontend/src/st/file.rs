@@ -340,6 +340,57 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 });
                 i = j;
             }
+            // `ACTION Name : ... END_ACTION` outside any POU and any ACTIONS block: a B&R
+            // Automation Studio program's actions file (or actions after their POU): one text
+            // named `ACTION` holding each action of the run
+            "ACTION" if toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident) => {
+                let start = t.range.clone();
+                let mut action_list = Vec::new();
+                let mut k = i;
+                let mut end = start.end;
+                while k < n
+                    && is_word(src, &toks[k], "ACTION")
+                    && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Ident)
+                {
+                    let name_tok = &toks[k + 1];
+                    let mut b = k + 2;
+                    if toks.get(b).is_some_and(|t| t.tok == Tok::Colon) {
+                        b += 1;
+                    }
+                    let text_start = toks[b - 1].range.end;
+                    let e = skip_to(b, "END_ACTION");
+                    let text_end = toks[e - 1].range.start.max(text_start);
+                    action_list.push((
+                        word(src, name_tok).to_string(),
+                        name_tok.range.clone(),
+                        text_start..text_end,
+                    ));
+                    end = toks[e - 1].range.end;
+                    k = e;
+                    // `END_ACTION;`
+                    if toks.get(k).is_some_and(|t| t.tok == Tok::Semi) {
+                        end = toks[k].range.end;
+                        k += 1;
+                    }
+                }
+                out.push(PouText {
+                    name: "ACTION".into(),
+                    name_range: start.clone(),
+                    body: start.start..end,
+                    lang: Lang::Il,
+                    sfc: None,
+                    oop: None,
+                    methods: Vec::new(),
+                    properties: Vec::new(),
+                    actions: Some(start),
+                    action_list,
+                    modifier: None,
+                    heritage: None,
+                    header_semi: None,
+                    interface: None,
+                });
+                i = k;
+            }
             "INTERFACE" if toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident) => {
                 let start = t.range.clone();
                 let name_tok = &toks[i + 1];
@@ -716,6 +767,38 @@ fn end_var_semicolons(
     text
 }
 
+/// Blanks B&R Automation Studio's zero initializer `:= (0)` of a declaration (`gAxis_HW :
+/// SdcHwCfg_typ := (0);`, `PID : MTBasicsPID := (0);` in its generated `.var` files): a structure,
+/// an instance or an array declared so starts as its type's initial value (no `:=` at all), as
+/// Automation Studio starts it with its members zero. Only inside `VAR ... END_VAR` and
+/// `STRUCT ... END_STRUCT`, and only before a `;` (`x := (0);` in a body is an assignment).
+fn zero_initializers(src: &str, toks: &[Token], text: &mut Option<String>) {
+    let mut in_decl = false;
+    for (k, t) in toks.iter().enumerate() {
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            let w = word(src, t).to_ascii_uppercase();
+            if is_var_keyword(&w) || w == "STRUCT" {
+                in_decl = true;
+            } else if w == "END_VAR" || w == "END_STRUCT" {
+                in_decl = false;
+            }
+            continue;
+        }
+        if !in_decl || t.tok != Tok::Assign {
+            continue;
+        }
+        if let [l, z, r, semi, ..] = &toks[k + 1..] {
+            if l.tok == Tok::LParen
+                && z.tok == Tok::Int(0)
+                && r.tok == Tok::RParen
+                && semi.tok == Tok::Semi
+            {
+                blank(text.get_or_insert_with(|| src.to_string()), t.range.start..r.range.end);
+            }
+        }
+    }
+}
+
 /// Skips the `VAR ... END_VAR` blocks that start at `h`: the position after them, and the end of
 /// the last closed one's `END_VAR` (`None` when no block starts there, or none is closed).
 pub(super) fn skip_var_blocks(src: &str, toks: &[Token], mut h: usize) -> (usize, Option<usize>) {
@@ -1022,7 +1105,10 @@ pub fn parse_text(
                 None => src,
             };
         // `END_VAR;`: the `;` blanked (W0017), so the blocks after it stay declarations
-        let src = match end_var_semicolons(file, src, &toks, diags) {
+        // `s : MyStruct := (0);` (B&R Automation Studio): blanked, the type's initial value
+        let mut unsemi = end_var_semicolons(file, src, &toks, diags);
+        zero_initializers(src, &toks, &mut unsemi);
+        let src = match unsemi {
             Some(t) => {
                 unsemicoloned = t;
                 (toks, problems) = lex(&unsemicoloned);
@@ -1417,6 +1503,41 @@ pub fn parse_text(
                     blank(&mut text, p.body.clone());
                     continue;
                 }
+            }
+            if p.name == "ACTION" {
+                // a B&R program folder's actions file: the actions go to the folder's program
+                // (`ladderc`'s `br_programs`), or to the block its file name names (`lone_members`)
+                let first = &p.action_list[0];
+                let unowned = Diagnostic::error(
+                    code::E1060,
+                    format!("action `{}` outside any POU: no program or block it belongs to", src.get(first.1.clone()).unwrap_or("")),
+                )
+                .at(Span::new(file, r.start, first.1.end))
+                .with_primary_label("not compiled")
+                .with_hint("give the B&R program folder's `_CYCLIC` file on the same command line, or put the actions in an `ACTIONS ... END_ACTIONS` block right after their POU");
+                pending.push(PendingBody {
+                    actions: p
+                        .action_list
+                        .iter()
+                        .map(|(name, name_range, text)| {
+                            (
+                                crate::ast::Ident::new(
+                                    name,
+                                    Span::new(file, name_range.start, name_range.end),
+                                ),
+                                src.get(text.clone()).unwrap_or("").to_string(),
+                                text.start,
+                            )
+                        })
+                        .collect(),
+                    lone: Some(Box::new(super::lone_members::LoneMembers {
+                        unowned,
+                        owner: None,
+                    })),
+                    ..PendingBody::empty(file, usize::MAX)
+                });
+                blank(&mut text, p.body.clone());
+                continue;
             }
             diags.push(
                 Diagnostic::error(
