@@ -767,6 +767,89 @@ fn end_var_semicolons(
     text
 }
 
+/// Blanks each declaration whose name is a keyword that opens or closes a block (`Configuration :
+/// INT;`, `type : UDINT;` of a B&R library's structure: Automation Studio is case-sensitive and
+/// reserves only the upper-case words), from the name to its `;`, with one E1031 at the name: read
+/// as the keyword, the name would open a CONFIGURATION or TYPE and every block around it would be
+/// reported unclosed. Only inside `VAR ... END_VAR` and `STRUCT ... END_STRUCT`, only a name that
+/// starts a declaration (after the block's keyword, a qualifier, `;` or `,`) and is followed by `:`
+/// or `,`. The POU holding one is not compiled further (`compile_pending`: its E1031 is the one
+/// error).
+fn keyword_declarations(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+    text: &mut Option<String>,
+) {
+    const BLOCK_WORDS: [&str; 7] = [
+        "CONFIGURATION",
+        "RESOURCE",
+        "TYPE",
+        "STRUCT",
+        "PROGRAM",
+        "FUNCTION",
+        "FUNCTION_BLOCK",
+    ];
+    let mut in_decl = false;
+    let mut k = 0;
+    while k < toks.len() {
+        let t = &toks[k];
+        k += 1;
+        if !matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            continue;
+        }
+        let w = word(src, t).to_ascii_uppercase();
+        let starts_decl = in_decl
+            && k >= 2
+            && (matches!(toks[k - 2].tok, Tok::Semi | Tok::Comma)
+                || matches!(
+                    word(src, &toks[k - 2]).to_ascii_uppercase().as_str(),
+                    "RETAIN" | "CONSTANT" | "NON_RETAIN" | "PERSISTENT" | "STRUCT"
+                )
+                || is_var_keyword(&word(src, &toks[k - 2]).to_ascii_uppercase()));
+        let named = starts_decl
+            && (BLOCK_WORDS.contains(&w.as_str()) || is_var_keyword(&w))
+            && toks
+                .get(k)
+                .is_some_and(|n| matches!(n.tok, Tok::Colon | Tok::Comma));
+        if named {
+            let name = word(src, t);
+            diags.push(
+                Diagnostic::error(
+                    code::E1031,
+                    format!("`{name}` is reserved in IEC 61131-3 (a keyword): it cannot name a variable"),
+                )
+                .at(Span::new(file, t.range.start, t.range.end))
+                .with_primary_label("a keyword")
+                .with_hint(format!("rename the variable, for example `x{name}`")),
+            );
+            // the declaration up to its `;` (the names before it in `a, Type : INT;` stay: the
+            // blank leaves `a, : INT;`, one E0011 more, never a block opened)
+            let mut e = k;
+            while e < toks.len()
+                && !matches!(toks[e].tok, Tok::Semi | Tok::Eof)
+                && !word(src, &toks[e]).eq_ignore_ascii_case("END_VAR")
+                && !word(src, &toks[e]).eq_ignore_ascii_case("END_STRUCT")
+            {
+                e += 1;
+            }
+            let end = match toks.get(e) {
+                Some(s) if s.tok == Tok::Semi => s.range.end,
+                _ => toks[e - 1].range.end,
+            };
+            blank(text.get_or_insert_with(|| src.to_string()), t.range.start..end);
+            k = e;
+            continue;
+        }
+        if is_var_keyword(&w) || w == "STRUCT" {
+            in_decl = true;
+        } else if w == "END_VAR" || w == "END_STRUCT" {
+            in_decl = false;
+        }
+    }
+}
+
 /// Blanks B&R Automation Studio's zero initializer `:= (0)` of a declaration (`gAxis_HW :
 /// SdcHwCfg_typ := (0);`, `PID : MTBasicsPID := (0);` in its generated `.var` files): a structure,
 /// an instance or an array declared so starts as its type's initial value (no `:=` at all), as
@@ -1108,6 +1191,9 @@ pub fn parse_text(
         // `s : MyStruct := (0);` (B&R Automation Studio): blanked, the type's initial value
         let mut unsemi = end_var_semicolons(file, src, &toks, diags);
         zero_initializers(src, &toks, &mut unsemi);
+        // `Configuration : INT;` (B&R, case-sensitive, accepts it): one E1031, the declaration
+        // blanked, so the block keyword opens no block (no cascade of E0008)
+        keyword_declarations(file, src, &toks, diags, &mut unsemi);
         let src = match unsemi {
             Some(t) => {
                 unsemicoloned = t;
