@@ -1373,6 +1373,12 @@ impl<'s, 'd> Parser<'s, 'd> {
                             let f = self.bump();
                             accessors.push(Accessor::Field(self.ident(&f)));
                         }
+                        // `s.Continue`, `cmd.Type` (B&R, CODESYS before edition 3): a keyword after
+                        // `.` can only be a field's name
+                        Tok::Kw(_) => {
+                            let f = self.bump();
+                            accessors.push(Accessor::Field(self.ident(&f)));
+                        }
                         // `x.3`: a partial access (3rd edition), kept as the field `3` (see
                         // `ast::partial_access`; `x.%X3` comes as an identifier from the lexer)
                         Tok::Int(_) => {
