@@ -1496,6 +1496,7 @@ pub fn parse_text(
     // 'to_string'}` is read (the first type declared after it gets it)
     let mut to_string_at: Vec<usize> = Vec::new();
     let mut strict_at: Vec<usize> = Vec::new();
+    let mut redund_reported = false;
     for pr in &problems {
         if let Problem::FlatComment(r) = pr {
             if !st_bodies
@@ -1518,6 +1519,15 @@ pub fn parse_text(
                     to_string_at.push(r.end);
                 } else if is_attribute(pragma, "strict") {
                     strict_at.push(r.end);
+                } else if super::lexer::is_redundancy_pragma(pragma) {
+                    // B&R's `{REDUND_ERROR}` before each of a library's blocks: one note a file
+                    if !redund_reported {
+                        redund_reported = true;
+                        diags.push(
+                            pragma_diagnostic(pragma, Span::new(file, r.start, r.end))
+                                .with_note("a B&R redundancy pragma (for redundant controllers); the file's others are ignored too, without a note"),
+                        );
+                    }
                 } else if !super::fb_init::is_call_after_init(pragma) {
                     diags.push(pragma_diagnostic(pragma, Span::new(file, r.start, r.end)));
                 }
