@@ -218,8 +218,7 @@ pub fn attach_actions(
             .filter(|(_, q)| {
                 q.lone.is_none()
                     && !q.sfc
-                    && q
-                        .pou_name(units)
+                    && q.pou_name(units)
                         .is_some_and(|n| PARTS.iter().any(|p| n.name.eq_ignore_ascii_case(p)))
                     && folder(q.file) == dir
             })

@@ -838,7 +838,10 @@ fn keyword_declarations(
                 Some(s) if s.tok == Tok::Semi => s.range.end,
                 _ => toks[e - 1].range.end,
             };
-            blank(text.get_or_insert_with(|| src.to_string()), t.range.start..end);
+            blank(
+                text.get_or_insert_with(|| src.to_string()),
+                t.range.start..end,
+            );
             k = e;
             continue;
         }
@@ -876,7 +879,10 @@ fn zero_initializers(src: &str, toks: &[Token], text: &mut Option<String>) {
                 && r.tok == Tok::RParen
                 && semi.tok == Tok::Semi
             {
-                blank(text.get_or_insert_with(|| src.to_string()), t.range.start..r.range.end);
+                blank(
+                    text.get_or_insert_with(|| src.to_string()),
+                    t.range.start..r.range.end,
+                );
             }
         }
     }

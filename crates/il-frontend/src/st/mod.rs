@@ -138,7 +138,10 @@ pub fn compile_body_with_actions(
         parsed = actions
             .iter()
             .map(|(n, text, b)| {
-                (n.clone(), parse_statements_of(n.span.file, text, *b, pou, &mut local))
+                (
+                    n.clone(),
+                    parse_statements_of(n.span.file, text, *b, pou, &mut local),
+                )
             })
             .collect();
         // `Advance;` (B&R Automation Studio calls an action so): the action's call, no W1431
