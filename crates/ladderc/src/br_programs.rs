@@ -187,6 +187,58 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
     }
 }
 
+/// A B&R program folder's actions file (`Actions.st`: `ACTION Name : ... END_ACTION`, no POU):
+/// its actions become those of the folder's `_INIT`, `_CYCLIC` and `_EXIT` parts (inlined where
+/// they call them, before [`join`] makes one program of the parts). A file of actions in a folder
+/// with no such part keeps its E1060 (reported by `lone_members::attach`).
+pub fn attach_actions(
+    units: &[CompilationUnit],
+    pending: &mut Vec<il_frontend::st::file::PendingBody>,
+    map: &SourceMap,
+) {
+    let folder = |file: diagnostics::FileId| -> PathBuf {
+        let name = Path::new(&map.get(file).name);
+        let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
+        path.parent().unwrap_or(Path::new("")).to_path_buf()
+    };
+    let mut taken = Vec::new();
+    for (a, pb) in pending.iter().enumerate() {
+        let actions_file = pb
+            .lone
+            .as_ref()
+            .is_some_and(|l| l.owner.is_none() && pb.methods.is_empty())
+            && !pb.actions.is_empty();
+        if !actions_file {
+            continue;
+        }
+        let dir = folder(pb.file);
+        let parts: Vec<usize> = pending
+            .iter()
+            .enumerate()
+            .filter(|(_, q)| {
+                q.lone.is_none()
+                    && !q.sfc
+                    && q.pou_name(units)
+                        .is_some_and(|n| PARTS.iter().any(|p| n.name.eq_ignore_ascii_case(p)))
+                    && folder(q.file) == dir
+            })
+            .map(|(k, _)| k)
+            .collect();
+        if !parts.is_empty() {
+            taken.push((a, parts));
+        }
+    }
+    for (a, parts) in taken.iter().rev() {
+        let actions = pending[*a].actions.clone();
+        for &k in parts {
+            pending[k].actions.extend(actions.iter().cloned());
+        }
+    }
+    for (a, _) in taken.into_iter().rev() {
+        pending.remove(a);
+    }
+}
+
 fn pou_at(units: &[CompilationUnit], u: usize, i: usize) -> Option<&Pou> {
     match units.get(u)?.items.get(i)? {
         LibraryElement::Pou(p) => Some(p),

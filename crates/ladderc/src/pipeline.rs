@@ -682,6 +682,8 @@ impl Session {
                 lone.name_owner(&self.map.get(pb.file).name);
             }
         }
+        // B&R: a program folder's actions file belongs to the folder's program parts
+        crate::br_programs::attach_actions(&units, &mut pending, &self.map);
         // B&R: a block declared in a `.fun` file and implemented in a `.st` one is one block
         crate::split_blocks::join(&mut units, &mut pending, &mut self.diags);
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);

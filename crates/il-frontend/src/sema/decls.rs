@@ -93,7 +93,7 @@ impl Analyzer<'_> {
                         if !self.unique_global_name(&p.name, &mut first_decl) {
                             continue;
                         }
-                        if matches!(p.kind, PouKind::FunctionBlock)
+                        if matches!(p.kind, crate::ast::PouKind::FunctionBlock)
                             && StdFb::from_name(&p.name.name).is_some()
                         {
                             // CODESYS and TwinCAT let a project's block hide the library's; IEC
@@ -163,7 +163,9 @@ impl Analyzer<'_> {
                                 vars: self.unlocated_fields(&d.name.name, fields),
                                 span: d.span,
                             }];
+                            self.declaring_fields = true;
                             let vars = self.declare_vars(&blocks, &Consts::new(), None);
+                            self.declaring_fields = false;
                             if d.union {
                                 self.check_union_members(&d.name.name, &vars);
                             }
@@ -806,7 +808,12 @@ impl Analyzer<'_> {
                         d.name.name
                     ));
                 }
-                if let Some(why) = reserved_name(&d.name.name) {
+                // a structure's field named with a keyword (`Continue`, `Type`: B&R's and
+                // CODESYS's libraries) is read only after `.` (`s.Continue`), where no keyword can
+                // stand: accepted
+                let field_keyword =
+                    self.declaring_fields && reserved_name(&d.name.name) == Some("a keyword");
+                if let Some(why) = reserved_name(&d.name.name).filter(|_| !field_keyword) {
                     // reported once, at the declaration; the variable is kept so that its uses
                     // give no further errors
                     self.error(

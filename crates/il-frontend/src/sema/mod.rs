@@ -63,6 +63,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         operator_functions: [None; 32],
         wide_chars_at: std::collections::HashSet::new(),
         reinterpreting_pous: std::collections::HashSet::new(),
+        declaring_fields: false,
         passing_any_address: false,
         counting_bit_string_pous: std::collections::HashSet::new(),
         integer_bits_pous: std::collections::HashSet::new(),
@@ -123,6 +124,9 @@ pub(crate) struct Analyzer<'d> {
     /// The POUs where W1425 (a pointer stored into a pointer to another type) was reported: once
     /// per POU.
     pub(crate) reinterpreting_pous: std::collections::HashSet<PouId>,
+    /// While set, [`Analyzer::declare_vars`] declares a structure's fields: a field may be named
+    /// with a keyword (`Continue : BOOL;`, B&R and CODESYS before edition 3), read only after `.`.
+    pub(crate) declaring_fields: bool,
     /// The argument being checked is the hidden address of an ANY input (`In__PVALUE`,
     /// `crate::st::any_inputs`): a `POINTER TO BYTE` to any argument by design, no W1425.
     pub(crate) passing_any_address: bool,

@@ -340,13 +340,10 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 });
                 i = j;
             }
-            // CODESYS V2.3's export: a POU's actions after its END_..., each `ACTION name:` ...
-            // `END_ACTION`, without an ACTIONS block: read as one ACTIONS block of the POU before
-            "ACTION"
-                if !out.is_empty()
-                    && toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident)
-                    && toks.get(i + 2).is_some_and(|t| t.tok == Tok::Colon) =>
-            {
+            // `ACTION Name : ... END_ACTION` outside any POU and any ACTIONS block: a B&R
+            // Automation Studio program's actions file (or actions after their POU): one text
+            // named `ACTION` holding each action of the run
+            "ACTION" if toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident) => {
                 let start = t.range.clone();
                 let mut action_list = Vec::new();
                 let mut k = i;
@@ -354,22 +351,30 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 while k < n
                     && is_word(src, &toks[k], "ACTION")
                     && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Ident)
-                    && toks.get(k + 2).is_some_and(|t| t.tok == Tok::Colon)
                 {
                     let name_tok = &toks[k + 1];
-                    let text_start = toks[k + 2].range.end;
-                    let e = skip_to(k + 3, "END_ACTION");
+                    let mut b = k + 2;
+                    if toks.get(b).is_some_and(|t| t.tok == Tok::Colon) {
+                        b += 1;
+                    }
+                    let text_start = toks[b - 1].range.end;
+                    let e = skip_to(b, "END_ACTION");
                     let text_end = toks[e - 1].range.start.max(text_start);
-                    end = toks[e - 1].range.end;
                     action_list.push((
                         word(src, name_tok).to_string(),
                         name_tok.range.clone(),
                         text_start..text_end,
                     ));
+                    end = toks[e - 1].range.end;
                     k = e;
+                    // `END_ACTION;`
+                    if toks.get(k).is_some_and(|t| t.tok == Tok::Semi) {
+                        end = toks[k].range.end;
+                        k += 1;
+                    }
                 }
                 out.push(PouText {
-                    name: "ACTIONS".into(),
+                    name: "ACTION".into(),
                     name_range: start.clone(),
                     body: start.start..end,
                     lang: Lang::Il,
@@ -771,6 +776,127 @@ fn end_var_semicolons(
     text
 }
 
+/// Blanks each declaration whose name is a keyword that opens or closes a block (`Configuration :
+/// INT;`, `type : UDINT;` of a B&R library's structure: Automation Studio is case-sensitive and
+/// reserves only the upper-case words), from the name to its `;`, with one E1031 at the name: read
+/// as the keyword, the name would open a CONFIGURATION or TYPE and every block around it would be
+/// reported unclosed. Only inside `VAR ... END_VAR` and `STRUCT ... END_STRUCT`, only a name that
+/// starts a declaration (after the block's keyword, a qualifier, `;` or `,`) and is followed by `:`
+/// or `,`. The POU holding one is not compiled further (`compile_pending`: its E1031 is the one
+/// error).
+fn keyword_declarations(
+    file: FileId,
+    src: &str,
+    toks: &[Token],
+    diags: &mut Diagnostics,
+    text: &mut Option<String>,
+) {
+    const BLOCK_WORDS: [&str; 7] = [
+        "CONFIGURATION",
+        "RESOURCE",
+        "TYPE",
+        "STRUCT",
+        "PROGRAM",
+        "FUNCTION",
+        "FUNCTION_BLOCK",
+    ];
+    let mut in_decl = false;
+    let mut k = 0;
+    while k < toks.len() {
+        let t = &toks[k];
+        k += 1;
+        if !matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            continue;
+        }
+        let w = word(src, t).to_ascii_uppercase();
+        let starts_decl = in_decl
+            && k >= 2
+            && (matches!(toks[k - 2].tok, Tok::Semi | Tok::Comma)
+                || matches!(
+                    word(src, &toks[k - 2]).to_ascii_uppercase().as_str(),
+                    "RETAIN" | "CONSTANT" | "NON_RETAIN" | "PERSISTENT" | "STRUCT"
+                )
+                || is_var_keyword(&word(src, &toks[k - 2]).to_ascii_uppercase()));
+        let named = starts_decl
+            && (BLOCK_WORDS.contains(&w.as_str()) || is_var_keyword(&w))
+            && toks
+                .get(k)
+                .is_some_and(|n| matches!(n.tok, Tok::Colon | Tok::Comma));
+        if named {
+            let name = word(src, t);
+            diags.push(
+                Diagnostic::error(
+                    code::E1031,
+                    format!("`{name}` is reserved in IEC 61131-3 (a keyword): it cannot name a variable"),
+                )
+                .at(Span::new(file, t.range.start, t.range.end))
+                .with_primary_label("a keyword")
+                .with_hint(format!("rename the variable, for example `x{name}`")),
+            );
+            // the declaration up to its `;` (the names before it in `a, Type : INT;` stay: the
+            // blank leaves `a, : INT;`, one E0011 more, never a block opened)
+            let mut e = k;
+            while e < toks.len()
+                && !matches!(toks[e].tok, Tok::Semi | Tok::Eof)
+                && !word(src, &toks[e]).eq_ignore_ascii_case("END_VAR")
+                && !word(src, &toks[e]).eq_ignore_ascii_case("END_STRUCT")
+            {
+                e += 1;
+            }
+            let end = match toks.get(e) {
+                Some(s) if s.tok == Tok::Semi => s.range.end,
+                _ => toks[e - 1].range.end,
+            };
+            blank(
+                text.get_or_insert_with(|| src.to_string()),
+                t.range.start..end,
+            );
+            k = e;
+            continue;
+        }
+        if is_var_keyword(&w) || w == "STRUCT" {
+            in_decl = true;
+        } else if w == "END_VAR" || w == "END_STRUCT" {
+            in_decl = false;
+        }
+    }
+}
+
+/// Blanks B&R Automation Studio's zero initializer `:= (0)` of a declaration (`gAxis_HW :
+/// SdcHwCfg_typ := (0);`, `PID : MTBasicsPID := (0);` in its generated `.var` files): a structure,
+/// an instance or an array declared so starts as its type's initial value (no `:=` at all), as
+/// Automation Studio starts it with its members zero. Only inside `VAR ... END_VAR` and
+/// `STRUCT ... END_STRUCT`, and only before a `;` (`x := (0);` in a body is an assignment).
+fn zero_initializers(src: &str, toks: &[Token], text: &mut Option<String>) {
+    let mut in_decl = false;
+    for (k, t) in toks.iter().enumerate() {
+        if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
+            let w = word(src, t).to_ascii_uppercase();
+            if is_var_keyword(&w) || w == "STRUCT" {
+                in_decl = true;
+            } else if w == "END_VAR" || w == "END_STRUCT" {
+                in_decl = false;
+            }
+            continue;
+        }
+        if !in_decl || t.tok != Tok::Assign {
+            continue;
+        }
+        if let [l, z, r, semi, ..] = &toks[k + 1..] {
+            if l.tok == Tok::LParen
+                && z.tok == Tok::Int(0)
+                && r.tok == Tok::RParen
+                && semi.tok == Tok::Semi
+            {
+                blank(
+                    text.get_or_insert_with(|| src.to_string()),
+                    t.range.start..r.range.end,
+                );
+            }
+        }
+    }
+}
+
 /// Skips the `VAR ... END_VAR` blocks that start at `h`: the position after them, and the end of
 /// the last closed one's `END_VAR` (`None` when no block starts there, or none is closed).
 pub(super) fn skip_var_blocks(src: &str, toks: &[Token], mut h: usize) -> (usize, Option<usize>) {
@@ -1101,7 +1227,13 @@ pub fn parse_text(
                 None => src,
             };
         // `END_VAR;`: the `;` blanked (W0017), so the blocks after it stay declarations
-        let src = match end_var_semicolons(file, src, &toks, diags) {
+        // `s : MyStruct := (0);` (B&R Automation Studio): blanked, the type's initial value
+        let mut unsemi = end_var_semicolons(file, src, &toks, diags);
+        zero_initializers(src, &toks, &mut unsemi);
+        // `Configuration : INT;` (B&R, case-sensitive, accepts it): one E1031, the declaration
+        // blanked, so the block keyword opens no block (no cascade of E0008)
+        keyword_declarations(file, src, &toks, diags, &mut unsemi);
+        let src = match unsemi {
             Some(t) => {
                 unsemicoloned = t;
                 (toks, problems) = lex(&unsemicoloned);
@@ -1417,6 +1549,7 @@ pub fn parse_text(
     // 'to_string'}` is read (the first type declared after it gets it)
     let mut to_string_at: Vec<usize> = Vec::new();
     let mut strict_at: Vec<usize> = Vec::new();
+    let mut redund_reported = false;
     for pr in &problems {
         if let Problem::FlatComment(r) = pr {
             if !st_bodies
@@ -1439,6 +1572,15 @@ pub fn parse_text(
                     to_string_at.push(r.end);
                 } else if is_attribute(pragma, "strict") {
                     strict_at.push(r.end);
+                } else if super::lexer::is_redundancy_pragma(pragma) {
+                    // B&R's `{REDUND_ERROR}` before each of a library's blocks: one note a file
+                    if !redund_reported {
+                        redund_reported = true;
+                        diags.push(
+                            pragma_diagnostic(pragma, Span::new(file, r.start, r.end))
+                                .with_note("a B&R redundancy pragma (for redundant controllers); the file's others are ignored too, without a note"),
+                        );
+                    }
                 } else if !super::fb_init::is_call_after_init(pragma) {
                     diags.push(pragma_diagnostic(pragma, Span::new(file, r.start, r.end)));
                 }
@@ -1510,6 +1652,41 @@ pub fn parse_text(
                     blank(&mut text, p.body.clone());
                     continue;
                 }
+            }
+            if p.name == "ACTION" {
+                // a B&R program folder's actions file: the actions go to the folder's program
+                // (`ladderc`'s `br_programs`), or to the block its file name names (`lone_members`)
+                let first = &p.action_list[0];
+                let unowned = Diagnostic::error(
+                    code::E1060,
+                    format!("action `{}` outside any POU: no program or block it belongs to", src.get(first.1.clone()).unwrap_or("")),
+                )
+                .at(Span::new(file, r.start, first.1.end))
+                .with_primary_label("not compiled")
+                .with_hint("give the B&R program folder's `_CYCLIC` file on the same command line, or put the actions in an `ACTIONS ... END_ACTIONS` block right after their POU");
+                pending.push(PendingBody {
+                    actions: p
+                        .action_list
+                        .iter()
+                        .map(|(name, name_range, text)| {
+                            (
+                                crate::ast::Ident::new(
+                                    name,
+                                    Span::new(file, name_range.start, name_range.end),
+                                ),
+                                src.get(text.clone()).unwrap_or("").to_string(),
+                                text.start,
+                            )
+                        })
+                        .collect(),
+                    lone: Some(Box::new(super::lone_members::LoneMembers {
+                        unowned,
+                        owner: None,
+                    })),
+                    ..PendingBody::empty(file, usize::MAX)
+                });
+                blank(&mut text, p.body.clone());
+                continue;
             }
             diags.push(
                 Diagnostic::error(

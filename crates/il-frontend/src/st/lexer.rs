@@ -621,6 +621,15 @@ pub enum PragmaKind {
     Code,
 }
 
+/// Whether `text` is a B&R redundancy pragma (`{REDUND_ERROR}`): [`pragma_kind`] reads it as
+/// informational, and a file reports only its first.
+pub fn is_redundancy_pragma(text: &str) -> bool {
+    let inner = text.trim_start_matches('{').trim_end_matches('}').trim();
+    inner.len() > 7
+        && inner[..7].eq_ignore_ascii_case("REDUND_")
+        && inner.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
 /// Classifies the full text of a pragma (with its braces).
 pub fn pragma_kind(text: &str) -> PragmaKind {
     let inner = text
@@ -653,7 +662,12 @@ pub fn pragma_kind(text: &str) -> PragmaKind {
         "noflow",
         "analysis",
     ];
-    if !text.starts_with("{{") && (inner.trim().is_empty() || INFO.contains(&word.as_str())) {
+    // B&R Automation Studio's redundancy pragmas (`{REDUND_OK}`, `{REDUND_ERROR}`,
+    // `{REDUND_UNREPLICABLE}` before a library's blocks and inputs): for its redundant controllers
+    let redund = word.starts_with("redund_") && inner.trim_end().len() == word.len();
+    if !text.starts_with("{{")
+        && (inner.trim().is_empty() || INFO.contains(&word.as_str()) || redund)
+    {
         PragmaKind::Informational
     } else {
         PragmaKind::Code

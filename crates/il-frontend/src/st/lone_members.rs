@@ -153,6 +153,8 @@ pub fn attach(
                 continue;
             }
         };
+        // a `Block.Actions.st` file's actions (`ACTION Name : ... END_ACTION` outside any POU)
+        out[k].actions.extend(pb.actions);
         for m in pb.methods {
             let block = &mut out[k];
             if let Some(first) = block.methods.iter().find(|x| x.name.key() == m.name.key()) {

@@ -870,6 +870,23 @@ impl<'d> PouLowering<'d> {
                     out.extend(code);
                 }
             }
+            // `r ACCESS e` (B&R): the reference itself takes the address `e` computes
+            StmtKind::Assign { target, value } if is_access_assign(value) => {
+                self.poisoned = false;
+                let mut code = Vec::new();
+                self.raw_refs = true;
+                let place = self.place_operand(target, &mut code, diags);
+                self.raw_refs = false;
+                if let ExprKind::Call { args, .. } = &value.kind {
+                    if let Some(a) = args.first() {
+                        self.value(&a.value, &mut code, diags);
+                    }
+                }
+                if let (Some(p), false) = (place, self.poisoned) {
+                    code.push(simple(Op::St, false, Some(p), span));
+                    out.extend(code);
+                }
+            }
             StmtKind::Assign { target, value } => {
                 self.poisoned = false;
                 let mut code = Vec::new();
@@ -3029,6 +3046,11 @@ fn place_exprs<'p>(p: &'p mut Place, out: &mut Vec<&'p mut Expr>) {
             out.extend(ix.iter_mut());
         }
     }
+}
+
+/// Whether an assignment's value is B&R's `ACCESS e` (see [`super::refs::ACCESS_ASSIGN`]).
+fn is_access_assign(value: &Expr) -> bool {
+    matches!(&value.kind, ExprKind::Call { name, .. } if name.is(super::refs::ACCESS_ASSIGN))
 }
 
 /// Whether an assignment's value is `REF= x` (see [`super::refs::REF_ASSIGN`]).

@@ -130,16 +130,43 @@ pub fn compile_body_with_actions(
     span: Span,
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Option<VarBlock>, Vec<crate::ast::Action>) {
-    let stmts = parse_statements_of(file, src, base, pou, diags);
+    let mut local = Diagnostics::new();
+    let mut stmts = parse_statements_of(file, src, base, pou, &mut local);
     let mut low = PouLowering::new(decls, pou);
     let mut parsed: Vec<(crate::ast::Ident, Vec<ast::Stmt>)> = Vec::new();
     if !actions.is_empty() {
         parsed = actions
             .iter()
-            .map(|(n, text, b)| (n.clone(), parse_statements_of(file, text, *b, pou, diags)))
+            .map(|(n, text, b)| {
+                (
+                    n.clone(),
+                    parse_statements_of(n.span.file, text, *b, pou, &mut local),
+                )
+            })
             .collect();
+        // `Advance;` (B&R Automation Studio calls an action so): the action's call, no W1431
+        let names: std::collections::HashSet<String> =
+            actions.iter().map(|(n, _, _)| n.key()).collect();
+        let mut called = Vec::new();
+        name_calls(&mut stmts, &names, &mut called);
+        for (_, body) in parsed.iter_mut() {
+            name_calls(body, &names, &mut called);
+        }
+        if !called.is_empty() {
+            let kept: Vec<_> = local
+                .into_vec()
+                .into_iter()
+                .filter(|d| {
+                    !(d.code == diagnostics::code::W1431
+                        && d.span.is_some_and(|s| called.contains(&s)))
+                })
+                .collect();
+            local = Diagnostics::new();
+            local.extend(kept);
+        }
         low.set_actions(parsed.clone());
     }
+    diags.extend(local);
     if !il_actions.is_empty() {
         low.set_il_actions(il_actions.to_vec());
     }
@@ -161,4 +188,56 @@ pub fn compile_body_with_actions(
         })
         .collect();
     (body, low.finish(span), standalone)
+}
+
+/// Makes each statement `Name;` that names one of the POU's actions (`names`, by key) a call
+/// `Name();` of it (B&R Automation Studio calls actions so), in `stmts` and the statements nested
+/// in them; the spans of those statements' names go to `called`.
+fn name_calls(
+    stmts: &mut [ast::Stmt],
+    names: &std::collections::HashSet<String>,
+    called: &mut Vec<Span>,
+) {
+    use ast::{PlaceBase, StmtKind};
+    for s in stmts {
+        match &mut s.kind {
+            StmtKind::Named(p) if p.accessors.is_empty() => {
+                if let PlaceBase::Name(n) = &p.base {
+                    if names.contains(&n.key()) {
+                        called.push(p.span);
+                        s.kind = StmtKind::Call {
+                            callee: p.clone(),
+                            args: Vec::new(),
+                        };
+                    }
+                }
+            }
+            StmtKind::If {
+                branches,
+                else_body,
+            } => {
+                for b in branches {
+                    name_calls(&mut b.body, names, called);
+                }
+                if let Some(e) = else_body {
+                    name_calls(e, names, called);
+                }
+            }
+            StmtKind::Case {
+                arms, else_body, ..
+            } => {
+                for a in arms {
+                    name_calls(&mut a.body, names, called);
+                }
+                if let Some(e) = else_body {
+                    name_calls(e, names, called);
+                }
+            }
+            StmtKind::For { body, .. } | StmtKind::While { body, .. } => {
+                name_calls(body, names, called)
+            }
+            StmtKind::Repeat { body, .. } => name_calls(body, names, called),
+            _ => {}
+        }
+    }
 }

@@ -839,6 +839,47 @@ impl<'s, 'd> Parser<'s, 'd> {
                     },
                 })
             }
+            // `r ACCESS ADR(x)` (B&R Automation Studio's dynamic variables): `r`, a REFERENCE TO,
+            // now refers to the address given: `r REF= x` for `ADR(x)`, else the address itself
+            // (`r ACCESS (ADR(r) + 1)`, see `super::refs::ACCESS_ASSIGN`)
+            Tok::Ident
+                if self.ident(self.cur()).is("ACCESS")
+                    && !matches!(self.peek_at(1), Tok::Semi | Tok::Eof) =>
+            {
+                let op = self.bump();
+                let value = self.expr();
+                if matches!(value.kind, ExprKind::Error) {
+                    return None;
+                }
+                let span = self.span(op.range.start, self.prev_end());
+                let (callee, value) = match &value.kind {
+                    ExprKind::Call { name, args }
+                        if (name.is("ADR") || name.is("REF"))
+                            && args.len() == 1
+                            && args[0].name.is_none()
+                            && matches!(args[0].value.kind, ExprKind::Place(_)) =>
+                    {
+                        (super::refs::REF_ASSIGN, args[0].value.clone())
+                    }
+                    _ => (super::refs::ACCESS_ASSIGN, value),
+                };
+                let arg = Arg {
+                    name: None,
+                    dir: ArgDir::Input,
+                    span: value.span,
+                    value,
+                };
+                Some(StmtKind::Assign {
+                    target,
+                    value: Expr {
+                        kind: ExprKind::Call {
+                            name: Ident::new(callee, span),
+                            args: vec![arg],
+                        },
+                        span,
+                    },
+                })
+            }
             Tok::Eq => {
                 self.error_here(
                     code::E0106,
@@ -1329,6 +1370,12 @@ impl<'s, 'd> Parser<'s, 'd> {
                     self.bump();
                     match self.peek() {
                         Tok::Ident => {
+                            let f = self.bump();
+                            accessors.push(Accessor::Field(self.ident(&f)));
+                        }
+                        // `s.Continue`, `cmd.Type` (B&R, CODESYS before edition 3): a keyword after
+                        // `.` can only be a field's name
+                        Tok::Kw(_) => {
                             let f = self.bump();
                             accessors.push(Accessor::Field(self.ident(&f)));
                         }

@@ -28,6 +28,11 @@ pub const IS_VALID_REF: &str = "__ISVALIDREF";
 /// The callee name `r REF= x` is parsed into (`r := REF=(x)`; no identifier can be written so).
 pub const REF_ASSIGN: &str = "REF=";
 
+/// The callee name `r ACCESS e` is parsed into when `e` is not `ADR(x)` (B&R Automation Studio's
+/// dynamic variables: `pt ACCESS (ADR(pt) + 1)`): the reference takes the address `e` computes, as a
+/// pointer would (`ADR(x)` is read as `r REF= x`).
+pub const ACCESS_ASSIGN: &str = "ACCESS=";
+
 /// `REF=` binding a `REFERENCE TO` input of the block's own method for one call (`CalculateBlock(block)`
 /// inside a method of the block): the reference is call-scoped ([`crate::ast::RefOperand::call_scoped`]),
 /// so it may refer to a VAR_IN_OUT or a temporary of the caller, and the input is reset to NULL when
