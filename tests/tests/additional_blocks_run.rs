@@ -150,8 +150,24 @@ END_PROGRAM
         "Main.at_start,Main.at_preset,Main.two_later,Main.q",
     );
     assert!(stderr.contains("W1435"), "{stderr}");
-    assert_eq!(column(&trace, "Main.at_start"), [1.0, 0.0, 0.0, 0.0, 0.0], "{trace}");
-    assert_eq!(column(&trace, "Main.at_preset"), [0.0, 0.0, 1.0, 0.0, 0.0], "{trace}");
-    assert_eq!(column(&trace, "Main.two_later"), [0.0, 0.0, 0.0, 0.0, 1.0], "{trace}");
-    assert_eq!(column(&trace, "Main.q"), [0.0, 0.0, 1.0, 1.0, 1.0], "{trace}");
+    assert_eq!(
+        column(&trace, "Main.at_start"),
+        [1.0, 0.0, 0.0, 0.0, 0.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "Main.at_preset"),
+        [0.0, 0.0, 1.0, 0.0, 0.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "Main.two_later"),
+        [0.0, 0.0, 0.0, 0.0, 1.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "Main.q"),
+        [0.0, 0.0, 1.0, 1.0, 1.0],
+        "{trace}"
+    );
 }

@@ -403,6 +403,9 @@ END_FUNCTION_BLOCK
     assert_eq!(code, Some(1), "{stderr}");
     let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
     assert_eq!(errors.len(), 1, "{stderr}");
-    assert!(errors[0].starts_with("ALARM.EXP:9:1: error[E0321]"), "{stderr}");
+    assert!(
+        errors[0].starts_with("ALARM.EXP:9:1: error[E0321]"),
+        "{stderr}"
+    );
     assert!(errors[0].contains("CFC"), "{stderr}");
 }

@@ -355,7 +355,10 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
             } else if is_time(to) {
                 Want::Ns(wrap(v * 1_000_000, "LINT"))
             } else if is_date(to) {
-                Want::Text(date_text(to, within_day(to, wrap(v * date_unit(to), "LINT"))))
+                Want::Text(date_text(
+                    to,
+                    within_day(to, wrap(v * date_unit(to), "LINT")),
+                ))
             } else {
                 Want::Text(wrap(*v, to).to_string())
             }

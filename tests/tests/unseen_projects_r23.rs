@@ -18,6 +18,10 @@
 //! - a nested comment before a `.TcPOU`'s block keyword (before: E0321).
 //! - a project's FUNCTION_BLOCK named as a standard block (`TON`) is W1446 at its name (before:
 //!   silent, the standard timer replaced).
+//! - B&R's system libraries' `.fun` declarations (`operator.fun`'s ADD, `standard.fun`'s TON) are
+//!   not compiled (W0021): the standard blocks stay (before: empty blocks replaced them, and a whole
+//!   project overflowed the stack in the ANY-input rewrite, which now never rewrites its own hidden
+//!   inputs).
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -489,8 +493,105 @@ END_PROGRAM
     let (code, lines) = check_text("stubs.st", src);
     assert_eq!(code, Some(0), "{lines:?}");
     assert_eq!(lines.len(), 1, "{lines:?}");
-    assert!(lines[0].starts_with("stubs.st:1:16: warning[W1446]"), "{lines:?}");
+    assert!(
+        lines[0].starts_with("stubs.st:1:16: warning[W1446]"),
+        "{lines:?}"
+    );
     // the project's block runs: Q follows IN at once (the standard TON would wait 30 ms)
     let (trace, _) = run_text("stubs.st", src, 1, "Main.q");
     assert_eq!(column(&trace, "Main.q"), [1.0], "{trace}");
+}
+
+/// B&R's system libraries given with a program (`Logical/Libraries/operator/operator.fun` declares
+/// ADD, `standard.fun` TON, without statements): not compiled, one note W0021 per file, and
+/// ladderc's own ADD and TON run (before: ADD was a user FUNCTION with an ANY input, E1068 at
+/// each call, and in a whole project an unbounded rewrite overflowed the stack; the TON an empty
+/// block that never timed). A declared block no file implements is E1019 where it is called.
+#[test]
+fn a_br_system_librarys_declarations_leave_the_standard_blocks_in_place() {
+    let dir = tempfile::tempdir().unwrap();
+    write_in(
+        dir.path(),
+        "Libraries/operator/operator.fun",
+        "{REDUND_OK} FUNCTION ADD : ANY\n\tVAR_INPUT\n\t\tINx\t:ANY;\n\tEND_VAR\nEND_FUNCTION\n\
+         {REDUND_OK} FUNCTION SIZEOF : UDINT\n\tVAR_INPUT\n\t\tin\t:ANY;\n\tEND_VAR\nEND_FUNCTION\n",
+    );
+    write_in(
+        dir.path(),
+        "Libraries/standard/standard.fun",
+        "FUNCTION_BLOCK TON\n\tVAR_INPUT IN : BOOL; PT : TIME; END_VAR\n\tVAR_OUTPUT Q : BOOL; ET : TIME; END_VAR\nEND_FUNCTION_BLOCK\n\
+         FUNCTION Vendor_Only : INT\n\tVAR_INPUT a : INT; END_VAR\nEND_FUNCTION\n",
+    );
+    write_in(
+        dir.path(),
+        "Main/Main.st",
+        "PROGRAM Main\nVAR x : INT; t : TON; q : BOOL; n : UDINT; END_VAR\nx := ADD(1, 2);\n\
+         n := SIZEOF(x);\nt(IN := TRUE, PT := T#20ms);\nq := t.Q;\nEND_PROGRAM\n",
+    );
+    let files = [
+        "Libraries/operator/operator.fun",
+        "Libraries/standard/standard.fun",
+        "Main/Main.st",
+    ];
+    let mut args = vec!["run", "--lang", "st"];
+    args.extend(files);
+    args.extend([
+        "--cycles",
+        "4",
+        "--trace",
+        "-",
+        "--watch",
+        "Main.x,Main.n,Main.q",
+    ]);
+    let (code, trace, stderr) = in_dir(dir.path(), &args);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(stderr.matches("W0021").count(), 2, "{stderr}");
+    assert!(
+        stderr.contains("declares 2 block(s) that no file implements (`TON`, `Vendor_Only`)"),
+        "{stderr}"
+    );
+    assert_eq!(column(&trace, "Main.x"), [3.0; 4], "{trace}");
+    assert_eq!(column(&trace, "Main.n"), [2.0; 4], "{trace}");
+    // the standard TON: Q after 20 ms
+    assert_eq!(column(&trace, "Main.q"), [0.0, 0.0, 1.0, 1.0], "{trace}");
+    // a call of the library's own function: E1019 at the call
+    write_in(
+        dir.path(),
+        "Main/Main.st",
+        "PROGRAM Main\nVAR y : INT; END_VAR\ny := Vendor_Only(3);\nEND_PROGRAM\n",
+    );
+    let mut args = vec!["check", "--lang", "st"];
+    args.extend(files);
+    let (code, _, stderr) = in_dir(dir.path(), &args);
+    assert_eq!(code, Some(1), "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    assert!(
+        errors[0].starts_with("Main/Main.st:3:6: error[E1019]"),
+        "{stderr}"
+    );
+}
+
+/// A project's own FUNCTION named SIZEOF with an ANY input, called with the hidden inputs the
+/// rewrite of another ANY call adds: the rewrite ends (before: it gave its own `SIZEOF(x)`
+/// hidden inputs again without end, and overflowed the stack); located errors, exit 1.
+#[test]
+fn a_function_named_sizeof_with_an_any_input_does_not_loop() {
+    let src = "FUNCTION SIZEOF : UDINT
+VAR_INPUT in : ANY; END_VAR
+SIZEOF := 4;
+END_FUNCTION
+FUNCTION F : UDINT
+VAR_INPUT x : ANY; END_VAR
+F := x.diSize;
+END_FUNCTION
+PROGRAM Main
+VAR a : INT; r : UDINT; END_VAR
+r := F(a);
+END_PROGRAM
+";
+    let (code, lines) = check_text("loop.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(!lines.is_empty());
+    assert!(lines.iter().all(|l| l.starts_with("loop.st:")), "{lines:?}");
 }

@@ -180,6 +180,9 @@ fn plc_project_name(
     })
 }
 
+/// An NC axis linked to a PLC `AXIS_REF`: the axis's name, the instance path, where the link is.
+type Link = (String, String, Span);
+
 /// One NC axis as read: its name, where it is declared, its parameters.
 struct NcAxis {
     name: String,
@@ -290,7 +293,7 @@ pub fn import(session: &mut Session, tsproj: &Path, plc: Option<&Path>) -> Optio
     // `<Mappings>`) in `_Config/PLC/<plc>.xti`, which `<Plc><Project File="PLC1.xti"/>` names:
     // each such file's project (name and path, to tell which is `plc`) and its links
     let mut xti_projects: Vec<(String, PathBuf)> = Vec::new();
-    let mut xti_links: Vec<(Option<String>, Vec<(String, String, Span)>)> = Vec::new();
+    let mut xti_links: Vec<(Option<String>, Vec<Link>)> = Vec::new();
     for plc_el in root.walk().filter(|e| e.name() == "Plc") {
         for project in plc_el.children_named("Project") {
             let Some((name, (s, e))) = project.attr_and_range("File") else {
@@ -532,11 +535,7 @@ fn read_axis(
 /// The PLC instance each NC axis is linked to: (axis name, `AXIS_REF` path, where the link is).
 /// `own`: the name of the PLC project compiled; links of another PLC project's instance
 /// (`TIPC^B^B Instance` while compiling A) are left out.
-fn mappings(
-    root: &Element,
-    file: diagnostics::FileId,
-    own: Option<&str>,
-) -> Vec<(String, String, Span)> {
+fn mappings(root: &Element, file: diagnostics::FileId, own: Option<&str>) -> Vec<Link> {
     let mut out = Vec::new();
     let Some(m) = root.walk().find(|e| e.name() == "Mappings") else {
         return out;

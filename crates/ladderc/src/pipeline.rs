@@ -685,7 +685,18 @@ impl Session {
         // B&R: a program folder's actions file belongs to the folder's program parts
         crate::br_programs::attach_actions(&units, &mut pending, &self.map);
         // B&R: a block declared in a `.fun` file and implemented in a `.st` one is one block
-        crate::split_blocks::join(&mut units, &mut pending, &mut self.diags);
+        let fun_files: Vec<diagnostics::FileId> = self
+            .map
+            .files()
+            .filter(|(_, f)| f.name.to_ascii_lowercase().ends_with(".fun"))
+            .map(|(id, _)| id)
+            .collect();
+        crate::split_blocks::join(
+            &mut units,
+            &mut pending,
+            |f| fun_files.contains(&f),
+            &mut self.diags,
+        );
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);

@@ -5,10 +5,13 @@
 //! Input: the parsed units and the ST bodies not yet compiled. Output: each such pair made one
 //! POU, the implementation's, with the declaration's blocks before its own (and the declaration's
 //! result type for a FUNCTION); the declaration removed with its empty body; one note W0019 at the
-//! implementation. Invariants: only pairs of one kind, in two files, where exactly one has no
-//! statement (no IL instruction and an ST body without a token) are joined; every other
-//! duplicate stays the checks' E1002. Runs before the bodies are compiled, so the statements are
-//! lowered knowing the declarations.
+//! implementation. A block of a `.fun` file that no file implements (B&R's system libraries:
+//! `operator.fun` declares ADD, `standard.fun` TON) is not compiled, one note W0021 per file:
+//! ladderc's own blocks stand for the standard names, a use of another is reported where it is
+//! made. Invariants: only pairs of one kind, in two files, where exactly one has no statement (no
+//! IL instruction and an ST body without a token) are joined; every other duplicate stays the
+//! checks' E1002; no declaration without statements becomes an empty block. Runs before the
+//! bodies are compiled, so the statements are lowered knowing the declarations.
 
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
 use il_frontend::ast::{CompilationUnit, LibraryElement, PouKind};
@@ -20,6 +23,7 @@ use std::collections::HashMap;
 pub fn join(
     units: &mut [CompilationUnit],
     pending: &mut Vec<PendingBody>,
+    is_fun: impl Fn(diagnostics::FileId) -> bool,
     diags: &mut Diagnostics,
 ) {
     // (unit, item) of every function block and function, by upper-case name
@@ -81,8 +85,60 @@ pub fn join(
         });
         removals.push(decl);
     }
+    // a `.fun` declaration no file implements: a block of a library the B&R system provides
+    // (`operator`, `standard`, `AsIecCon`: ADD, TON, INT_TO_REAL ... declared without statements),
+    // not compiled (an empty body would stand silently for the block: a TON that never times, an
+    // ADD that gives 0); ladderc's own standard functions and blocks stand for the standard names,
+    // a use of any other is an unknown function or type at that use; one note W0021 per file
+    let mut skipped: Vec<(diagnostics::FileId, diagnostics::Span, Vec<String>)> = Vec::new();
+    for (u, unit) in units.iter().enumerate() {
+        for (i, item) in unit.items.iter().enumerate() {
+            let LibraryElement::Pou(p) = item else {
+                continue;
+            };
+            if !matches!(p.kind, PouKind::FunctionBlock | PouKind::Function)
+                || !is_fun(p.name.span.file)
+                || removals.contains(&(u, i))
+                || by_name.get(&p.name.key()).is_some_and(|v| v.len() > 1)
+                || !no_statement(p, pending)
+            {
+                continue;
+            }
+            match skipped.iter_mut().find(|(f, _, _)| *f == p.name.span.file) {
+                Some((_, _, names)) => names.push(p.name.name.clone()),
+                None => skipped.push((p.name.span.file, p.name.span, vec![p.name.name.clone()])),
+            }
+            pending.retain(|b| {
+                !(b.file == p.name.span.file && b.name_start == p.name.span.start as usize)
+            });
+            removals.push((u, i));
+        }
+    }
+    for (_, at, names) in skipped {
+        let shown: Vec<String> = names.iter().take(8).map(|n| format!("`{n}`")).collect();
+        let more = if names.len() > 8 {
+            format!(" and {} more", names.len() - 8)
+        } else {
+            String::new()
+        };
+        diags.push(
+            Diagnostic::new(
+                code::W0021,
+                Severity::Note,
+                format!(
+                    "this `.fun` file declares {} block(s) that no file implements ({}{more}): a library the B&R system provides, not compiled",
+                    names.len(),
+                    shown.join(", ")
+                ),
+            )
+            .at(at)
+            .with_primary_label("declared without statements")
+            .with_hint("ladderc's own standard functions and blocks (ADD, TON, INT_TO_REAL ...) stand for the standard names; a call of any other is reported where it is made (give the library's source if you have it)"),
+        );
+    }
     // from the back, so the other indexes stay valid
     removals.sort();
+    removals.dedup();
     for (u, i) in removals.into_iter().rev() {
         units[u].items.remove(i);
     }

@@ -88,13 +88,14 @@ impl Gen<'_> {
             } else {
                 String::new()
             };
-            return Some(self.moved_pointer(scope, &lv, &target, index, rest, v.span, &site));
+            return Some(self.moved_pointer(scope, &lv, &target, index, rest, (v.span, &site)));
         }
         None
     }
 
     /// The pointer `lv` (to `target`) moved by `index` elements and then to the place `rest`
-    /// (fields and array indexes) inside its target.
+    /// (fields and array indexes) inside its target; `at`: the access's span, and the site an
+    /// index of `rest` out of range reports (a C string literal).
     fn moved_pointer(
         &mut self,
         scope: &Scope,
@@ -102,9 +103,9 @@ impl Gen<'_> {
         target: &Type,
         index: Option<&Operand>,
         rest: &[Accessor],
-        span: Span,
-        site: &str,
+        at: (Span, &str),
     ) -> Option<String> {
+        let (span, site) = at;
         let base = ctypes::base(self.model, target)?;
         let dims = ctypes::dims(target);
         let (scratch, _) = self.null_scratch(&base, &dims);

@@ -661,7 +661,14 @@ impl Rewrite<'_, '_> {
                 if let Some(c) = callee_of_call(self.env, name) {
                     self.call(&c, args);
                 }
-                for a in args.iter_mut() {
+                // (the hidden inputs the call was given are this rewrite's own `SIZEOF(x)`,
+                // `ADR(x)` and class numbers: not rewritten again, even where the project
+                // declares a FUNCTION of such a name with an ANY input, which would give them
+                // hidden inputs of their own without end)
+                for a in args
+                    .iter_mut()
+                    .filter(|a| !a.name.as_ref().is_some_and(is_hidden))
+                {
                     self.expr(&mut a.value);
                 }
             }
@@ -972,4 +979,10 @@ impl Rewrite<'_, '_> {
         }
         *args = out;
     }
+}
+
+/// Whether `name` is a hidden input of an ANY input (`In__DISIZE`, `In__TYPECLASS`, `In__PVALUE`).
+fn is_hidden(name: &Ident) -> bool {
+    let up = name.name.to_ascii_uppercase();
+    [SIZE, CLASS, VALUE].iter().any(|s| up.ends_with(s))
 }
