@@ -22,6 +22,8 @@
 //!   not compiled (W0021): the standard blocks stay (before: empty blocks replaced them, and a whole
 //!   project overflowed the stack in the ANY-input rewrite, which now never rewrites its own hidden
 //!   inputs).
+//! - `MEMCPY` of a pointer expression over an undeclared name: E1001 names it, and the project's
+//!   other checks run (before: one E1035 that stopped them all); `p + n` of a POINTER TO variable.
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -594,4 +596,47 @@ END_PROGRAM
     assert_eq!(code, Some(1), "{lines:?}");
     assert!(!lines.is_empty());
     assert!(lines.iter().all(|l| l.starts_with("loop.st:")), "{lines:?}");
+}
+
+/// `MEMCPY(ADR(buf), blockInfo.pData + 4, ...)` where `blockInfo` is undeclared: E1001 names it,
+/// and the other undeclared names of the project are reported too (before: one E1035 "the
+/// variable this pointer points into cannot be known", which stopped every other check: Yaha
+/// BMS's 10 E1001 appeared only once its MEMCPY lines were removed). A POINTER TO variable plus
+/// a byte offset is its address moved on (`p + 4` of an INT array: the third element).
+#[test]
+fn memcpy_of_a_pointer_expression_names_what_is_undeclared() {
+    let src = "PROGRAM Main
+VAR buf : ARRAY[0..3] OF INT; END_VAR
+MEMCPY(ADR(buf), blockInfo.pData + 4, SIZEOF(buf));
+counter := counter + 1;
+END_PROGRAM
+";
+    let (code, lines) = check_text("mem.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(
+        lines[0].starts_with("mem.st:3:18: error[E1001]: undeclared name `blockInfo`"),
+        "{lines:?}"
+    );
+    assert!(
+        lines[1].starts_with("mem.st:4:1: error[E1001]: undeclared name `counter`"),
+        "{lines:?}"
+    );
+    let src = "PROGRAM Main
+VAR
+  buf : ARRAY[0..3] OF INT;
+  src : ARRAY[0..7] OF INT := [1, 2, 3, 4, 5, 6, 7, 8];
+  p : POINTER TO INT;
+  n, m : INT;
+END_VAR
+p := ADR(src);
+MEMCPY(ADR(buf), p + 4, SIZEOF(buf));
+n := buf[0];
+m := buf[3];
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("ptr.st", src, 1, "Main.n,Main.m");
+    assert!(!stderr.contains("runtime"), "{stderr}");
+    assert_eq!(column(&trace, "Main.n"), [3.0], "{trace}");
+    assert_eq!(column(&trace, "Main.m"), [6.0], "{trace}");
 }

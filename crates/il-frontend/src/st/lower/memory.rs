@@ -143,6 +143,22 @@ impl PouLowering<'_> {
         true
     }
 
+    /// Whether `p` is a POINTER TO / REF_TO variable, or a place the lowering cannot type (an
+    /// undeclared name, a member it cannot see): passed as a pointer, so that the checks name
+    /// what is wrong with it (E1001, or E1035 "is not a pointer") instead of one E1035 here that
+    /// stops every check of the project.
+    fn pointer_or_untyped(&self, p: &super::super::ast::Place) -> bool {
+        let env = self.env();
+        match env.place_type(p).map(|t| env.resolve(&t)) {
+            Some(il::TypeRef::Ref {
+                kind: il::RefKind::Pointer | il::RefKind::RefTo,
+                ..
+            }) => true,
+            Some(_) => false,
+            None => true,
+        }
+    }
+
     /// The variable a pointer argument points to: `ADR(x)` / `REF(x)` of a place (`false`), or a
     /// `POINTER TO` / `REF_TO` variable itself (`true`: its value is the address, bounded at run
     /// time); anything else is one E1035 (its object, so the bytes it may reach, cannot be known).
@@ -166,30 +182,28 @@ impl PouLowering<'_> {
                     if super::super::refs::is_address_of(name)
                         && matches!(&args[..], [Arg { name: None, value: Expr { kind: ExprKind::Place(_), .. }, .. }]))
             };
-            let (address, offset) = if is_address(left) {
+            // (a pointer variable, or a name the lowering cannot type, such as an undeclared
+            // one: the checks report it, E1001 or E1035 "is not a pointer")
+            let is_pointer = |x: &Expr| match &x.kind {
+                ExprKind::Place(p) => self.pointer_or_untyped(p),
+                _ => false,
+            };
+            let (address, offset) = if is_address(left) || is_pointer(left) {
                 (left, right)
-            } else if is_address(right) {
+            } else if is_address(right) || is_pointer(right) {
                 (right, left)
             } else {
                 (left, left)
             };
             if !std::ptr::eq(address, offset) {
-                let (v, _, _) = self.pointed_variable(func, address, out, diags)?;
+                let (v, through, _) = self.pointed_variable(func, address, out, diags)?;
                 let udint = il::TypeRef::Named(il::Ident::new("UDINT", offset.span));
                 let o = self.operand(offset, Some(&udint), out, diags);
-                return Some((v, false, Some(o)));
+                return Some((v, through, Some(o)));
             }
         }
         if let ExprKind::Place(p) = &e.kind {
-            let env = self.env();
-            let pointer = matches!(
-                env.place_type(p).map(|t| env.resolve(&t)),
-                Some(il::TypeRef::Ref {
-                    kind: il::RefKind::Pointer | il::RefKind::RefTo,
-                    ..
-                })
-            );
-            if pointer {
+            if self.pointer_or_untyped(p) {
                 if let Some(Operand::Var(v)) = self.place_operand(p, out, diags) {
                     return Some((v, true, None));
                 }
