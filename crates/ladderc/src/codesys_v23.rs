@@ -141,18 +141,7 @@ pub fn read(file: FileId, text: &str) -> Option<Export> {
     }
     let mut t = text.to_string();
     for r in blanked {
-        let part: String = t[r.clone()]
-            .chars()
-            .flat_map(|c| {
-                let (ch, n) = if c == '\n' || c == '\r' {
-                    (c, 1)
-                } else {
-                    (' ', c.len_utf8())
-                };
-                std::iter::repeat_n(ch, n)
-            })
-            .collect();
-        t.replace_range(r, &part);
+        il_frontend::st::file::blank(&mut t, r);
     }
     out.text = t;
     Some(out)

@@ -322,22 +322,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                         k += 1;
                     }
                 }
-                out.push(PouText {
-                    name: "ACTIONS".into(),
-                    name_range: start.clone(),
-                    body: start.start..end,
-                    lang: Lang::Il,
-                    sfc: None,
-                    oop: None,
-                    methods: Vec::new(),
-                    properties: Vec::new(),
-                    actions: Some(start),
-                    action_list,
-                    modifier: None,
-                    heritage: None,
-                    header_semi: None,
-                    interface: None,
-                });
+                out.push(actions_text("ACTIONS", start, end, action_list));
                 i = j;
             }
             // `ACTION Name : ... END_ACTION` outside any POU and any ACTIONS block: a B&R
@@ -373,22 +358,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                         k += 1;
                     }
                 }
-                out.push(PouText {
-                    name: "ACTION".into(),
-                    name_range: start.clone(),
-                    body: start.start..end,
-                    lang: Lang::Il,
-                    sfc: None,
-                    oop: None,
-                    methods: Vec::new(),
-                    properties: Vec::new(),
-                    actions: Some(start),
-                    action_list,
-                    modifier: None,
-                    heritage: None,
-                    header_semi: None,
-                    interface: None,
-                });
+                out.push(actions_text("ACTION", start, end, action_list));
                 i = k;
             }
             "INTERFACE" if toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident) => {
@@ -1127,9 +1097,35 @@ fn declarations_only(src: &str, toks: &[Token], stray: &[usize]) -> bool {
         })
 }
 
+/// The text of an `ACTIONS` block (or, named `ACTION`, of actions outside any POU) from `start`
+/// to `end`: its actions' names and statement ranges.
+fn actions_text(
+    name: &str,
+    start: Range<usize>,
+    end: usize,
+    action_list: Vec<(String, Range<usize>, Range<usize>)>,
+) -> PouText {
+    PouText {
+        name: name.into(),
+        name_range: start.clone(),
+        body: start.start..end,
+        lang: Lang::Il,
+        sfc: None,
+        oop: None,
+        methods: Vec::new(),
+        properties: Vec::new(),
+        actions: Some(start),
+        action_list,
+        modifier: None,
+        heritage: None,
+        header_semi: None,
+        interface: None,
+    }
+}
+
 /// Blanks `range` of `text`: every character but line ends becomes spaces of its byte length, so
 /// positions do not move.
-pub(super) fn blank(text: &mut String, range: Range<usize>) {
+pub fn blank(text: &mut String, range: Range<usize>) {
     let Some(part) = text.get(range.clone()) else {
         return;
     };

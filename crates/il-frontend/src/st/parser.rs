@@ -822,22 +822,12 @@ impl<'s, 'd> Parser<'s, 'd> {
                     return None;
                 }
                 let span = self.span(op.range.start, self.prev_end());
-                let arg = Arg {
-                    name: None,
-                    dir: ArgDir::Input,
-                    span: value.span,
-                    value,
-                };
-                Some(StmtKind::Assign {
+                Some(reference_assign(
                     target,
-                    value: Expr {
-                        kind: ExprKind::Call {
-                            name: Ident::new(super::refs::REF_ASSIGN, span),
-                            args: vec![arg],
-                        },
-                        span,
-                    },
-                })
+                    super::refs::REF_ASSIGN,
+                    value,
+                    span,
+                ))
             }
             // `r ACCESS ADR(x)` (B&R Automation Studio's dynamic variables): `r`, a REFERENCE TO,
             // now refers to the address given: `r REF= x` for `ADR(x)`, else the address itself
@@ -863,22 +853,7 @@ impl<'s, 'd> Parser<'s, 'd> {
                     }
                     _ => (super::refs::ACCESS_ASSIGN, value),
                 };
-                let arg = Arg {
-                    name: None,
-                    dir: ArgDir::Input,
-                    span: value.span,
-                    value,
-                };
-                Some(StmtKind::Assign {
-                    target,
-                    value: Expr {
-                        kind: ExprKind::Call {
-                            name: Ident::new(callee, span),
-                            args: vec![arg],
-                        },
-                        span,
-                    },
-                })
+                Some(reference_assign(target, callee, value, span))
             }
             Tok::Eq => {
                 self.error_here(
@@ -2052,4 +2027,25 @@ fn return_if(cond: Expr, span: Span) -> Option<StmtKind> {
         }],
         else_body: None,
     })
+}
+
+/// `target REF= value` (or B&R's `ACCESS`) as the assignment of the hidden call `callee(value)`
+/// that the lowering reads (`super::refs`).
+fn reference_assign(target: Place, callee: &str, value: Expr, span: Span) -> StmtKind {
+    let arg = Arg {
+        name: None,
+        dir: ArgDir::Input,
+        span: value.span,
+        value,
+    };
+    StmtKind::Assign {
+        target,
+        value: Expr {
+            kind: ExprKind::Call {
+                name: Ident::new(callee, span),
+                args: vec![arg],
+            },
+            span,
+        },
+    }
 }
