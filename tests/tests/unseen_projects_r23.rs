@@ -619,7 +619,7 @@ END_PROGRAM
         "{lines:?}"
     );
     assert!(
-        lines[1].starts_with("mem.st:4:1: error[E1001]: undeclared name `counter`"),
+        lines[1].starts_with("mem.st:4:12: error[E1001]: undeclared name `counter`"),
         "{lines:?}"
     );
     let src = "PROGRAM Main

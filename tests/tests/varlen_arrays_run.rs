@@ -49,11 +49,13 @@ fn blocks_methods_and_element_types() {
          1,10,7,0,2,\"abcd\",7,42,6,1,1,7\n"
     );
     assert!(
-        stderr.contains("runtime: pointer outside its variable dereferenced (first: data__VLA"),
+        stderr.contains(
+            "runtime: pointer outside its variable dereferenced (first: data__VLA[data[UPPER_BOUND(data, 1) + 1]]"
+        ),
         "{stderr}"
     );
     assert!(
-        stderr.contains("in Stats; zero read, write dropped)"),
+        stderr.contains("in Stats at blocks.st:16; zero read, write dropped)"),
         "{stderr}"
     );
 }

@@ -221,11 +221,7 @@ impl Gen<'_> {
         let base = ctypes::base(self.model, &target)?;
         let dims = ctypes::dims(&target);
         let (scratch, align) = self.null_scratch(&base, &dims);
-        let path = il_frontend::print::var_ref_text(&VarRef {
-            base: v.base.clone(),
-            accessors: v.accessors.iter().take(at + 1).cloned().collect(),
-            span: v.span,
-        });
+        let path = self.written(v, at);
         // the hidden, always NULL reference a call through an unassigned interface variable reads
         // (il_frontend::st::interface_vars): named by the variable, not by the hidden field
         let unassigned = cfmt!(".{}^", il_frontend::st::interface_vars::UNASSIGNED);

@@ -585,10 +585,14 @@ impl Gen<'_> {
         Some(Place::Mem { lv, ty })
     }
 
-    /// The site of the index at accessor `at` of `r`: `r` up to that index, as written (an index
-    /// expression the ST lowering computed into a temporary, `temps[_ST_T1]`, is shown as its
-    /// source text, `temps[i + 1]`).
+    /// The site of the index at accessor `at` of `r`: [`Self::written`] up to that index.
     fn index_site(&self, scope: &Scope, r: &VarRef, at: usize) -> String {
+        self.site(scope, &self.written(r, at), r.span)
+    }
+
+    /// `r` up to its accessor `at`, as written: an index expression the ST lowering computed into
+    /// a temporary (`temps[_ST_T1]`) is shown as its source text (`temps[i + 1]`).
+    pub(super) fn written(&self, r: &VarRef, at: usize) -> String {
         let as_written = |op: &Operand| match op {
             Operand::Var(v) if v.accessors.is_empty() && is_temporary(&v.base.name) => {
                 match self.lines.text(v.base.span) {
@@ -615,7 +619,7 @@ impl Gen<'_> {
                 .collect(),
             span: r.span,
         };
-        self.site(scope, &il_frontend::print::var_ref_text(&upto), r.span)
+        il_frontend::print::var_ref_text(&upto)
     }
 
     /// `a[i, j]` of a located array `a` (elementary elements, see [`located_bytes`]): the element
