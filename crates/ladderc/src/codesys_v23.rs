@@ -52,7 +52,7 @@ fn lines(text: &str) -> Vec<(usize, &str)> {
 }
 
 /// Reads `text` as a CODESYS V2.3 export; `None` when it has no such section (a section starts at
-/// a line whose first word is one of [`SECTIONS`], `RESOURCE` alone on its line: IEC 61131-3's
+/// a line whose first word is one of `SECTIONS`, `RESOURCE` alone on its line: IEC 61131-3's
 /// has a name and sits inside a CONFIGURATION).
 pub fn read(file: FileId, text: &str) -> Option<Export> {
     let ls = lines(text);
