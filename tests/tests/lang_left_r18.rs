@@ -181,7 +181,7 @@ fn an_any_inputs_pvalue_is_a_bounded_pointer_to_the_argument() {
     // no W1425: the hidden address is a POINTER TO BYTE to any argument by design
     assert!(!stderr.contains("warning"), "{stderr}");
     assert!(
-        stderr.contains("runtime: pointer outside its variable dereferenced (first: SRC__PVALUE[nIndex] in F_CopyOut at any_pvalue.st:34; zero read, write dropped)"),
+        stderr.contains("runtime: pointer outside its variable dereferenced (first: Src.pValue[nIndex] in F_CopyOut at any_pvalue.st:34; zero read, write dropped)"),
         "{stderr}"
     );
     let trace = String::from_utf8_lossy(&out.stdout);

@@ -227,7 +227,15 @@ impl Gen<'_> {
         let unassigned = cfmt!(".{}^", il_frontend::st::interface_vars::UNASSIGNED);
         let what = match path.strip_suffix(unassigned.as_str()) {
             Some(itf) => cfmt!("a call through the unassigned interface {itf}"),
-            None => path,
+            None => match varlen_array(&v.base.name) {
+                // an `ARRAY [*]` in-out's element (il_frontend::st::varlen): named as written
+                Some(array) => {
+                    let written = self.lines.text(v.span).map(str::to_string);
+                    let written = written.unwrap_or_else(|| cfmt!("{array}[...]"));
+                    cfmt!("{written} (an index outside the array passed)")
+                }
+                None => path,
+            },
         };
         let site = self.site(scope, &what, v.span);
         let r = match index {
@@ -276,4 +284,13 @@ impl Gen<'_> {
         }
         s
     }
+}
+
+/// The `ARRAY [*]` in-out whose hidden address input is `name` (`data__VLA` or `data__VLA_ADR`:
+/// `data`), if it is one.
+fn varlen_array(name: &str) -> Option<&str> {
+    use il_frontend::st::varlen::{ADDRESS, CALL_ADDRESS};
+    name.strip_suffix(CALL_ADDRESS)
+        .or_else(|| name.strip_suffix(ADDRESS))
+        .filter(|a| !a.is_empty())
 }

@@ -606,8 +606,22 @@ impl Gen<'_> {
             }
             _ => op.clone(),
         };
+        // an ANY input's hidden address (il_frontend::st::any_inputs) as written: `In.pValue`
+        let base = match r.base.name.strip_suffix(il_frontend::st::any_inputs::VALUE) {
+            Some(input) if !input.is_empty() => {
+                let shown = cfmt!("{input}.pValue");
+                // the user's spelling (`Src.pValue`) where the source has it
+                let written = [r.base.span, r.span].into_iter().find_map(|span| {
+                    let t = self.lines.text(span)?.get(..shown.len())?;
+                    t.eq_ignore_ascii_case(&shown).then(|| t.to_string())
+                });
+                let shown = written.unwrap_or(shown);
+                il_frontend::ast::Ident::new(shown, r.base.span)
+            }
+            _ => r.base.clone(),
+        };
         let upto = VarRef {
-            base: r.base.clone(),
+            base,
             accessors: r
                 .accessors
                 .iter()
