@@ -5,8 +5,10 @@
 //! (halves, negatives, limits, NaN and infinities). The rules (crates/c-backend/README.md,
 //! "Conversions"): REAL/LREAL to integers round to nearest with halves to even and saturate, NaN gives
 //! 0; TRUNC truncates toward zero and saturates; integers wrap to the target width; TIME and TOD
-//! convert from and to milliseconds, DT and DATE seconds (a number to DATE keeps the day, to TOD the
-//! time of day); LREAL to REAL rounds to nearest and overflows to an infinity.
+//! convert from and to milliseconds, DT and DATE seconds, edition 3's LDT, LDATE and LTOD
+//! nanoseconds (a number to DATE keeps the day, to TOD the time of day; DT and LDT convert to the
+//! date and the time of day of either length); LREAL to REAL rounds to nearest and overflows to an
+//! infinity.
 
 mod common;
 use common::ladderc;
@@ -111,6 +113,22 @@ fn inputs(ty: &str) -> Vec<(String, V)> {
             ),
             ("DT#1969-12-31-23:00:00".into(), V::T(-3_600_000_000_000)),
         ],
+        // edition 3's long forms: the same values, their numbers in nanoseconds
+        "LDATE" => vec![
+            ("LDATE#2024-01-31".into(), V::T(19753 * 86_400_000_000_000)),
+            ("LDATE#1969-12-31".into(), V::T(-86_400_000_000_000)),
+        ],
+        "LTOD" => vec![
+            ("LTOD#12:30:00.000000005".into(), V::T(45_000_000_000_005)),
+            ("LTOD#00:00:00".into(), V::T(0)),
+        ],
+        "LDT" => vec![
+            (
+                "LDT#2024-01-31-12:30:00.25".into(),
+                V::T(19753 * 86_400_000_000_000 + 45_000_250_000_000),
+            ),
+            ("LDT#1969-12-31-23:00:00".into(), V::T(-3_600_000_000_000)),
+        ],
         "STRING" => [
             "42",
             " -7 ",
@@ -123,6 +141,7 @@ fn inputs(ty: &str) -> Vec<(String, V)> {
             "D#2024-01-31",
             "TOD#12:30:00",
             "DT#2024-01-31-12:30:00",
+            "LDT#2024-01-31-12:30:00",
             "",
         ]
         .iter()
@@ -210,22 +229,26 @@ fn is_time(t: &str) -> bool {
     matches!(t, "TIME" | "LTIME")
 }
 fn is_date(t: &str) -> bool {
-    matches!(t, "DATE" | "TOD" | "DT")
+    matches!(t, "DATE" | "TOD" | "DT" | "LDATE" | "LTOD" | "LDT")
+}
+/// The edition-2 date type whose kind of value `t` holds (LDATE: DATE ...).
+fn kind(t: &str) -> &str {
+    t.strip_prefix('L').filter(|k| is_date(k)).unwrap_or(t)
 }
 /// The nanoseconds of one unit of the number a date converts to and from: seconds for DT and
-/// DATE, milliseconds for TOD.
+/// DATE, milliseconds for TOD, nanoseconds for LDATE, LTOD and LDT.
 fn date_unit(t: &str) -> i128 {
-    if t == "TOD" {
-        1_000_000
-    } else {
-        1_000_000_000
+    match t {
+        "TOD" => 1_000_000,
+        "LDATE" | "LTOD" | "LDT" => 1,
+        _ => 1_000_000_000,
     }
 }
-/// A DATE keeps the day (floored, wrapping as the run time's LINT arithmetic), a TOD the time
-/// of day.
+/// A DATE or LDATE keeps the day (floored, wrapping as the run time's LINT arithmetic), a TOD or
+/// LTOD the time of day.
 fn within_day(t: &str, ns: i128) -> i128 {
     let day = 86_400_000_000_000i128;
-    match t {
+    match kind(t) {
         "DATE" => wrap(ns - ns.rem_euclid(day), "LINT"),
         "TOD" => ns.rem_euclid(day),
         _ => ns,
@@ -258,8 +281,9 @@ fn date_text(t: &str, ns: i128) -> String {
     }
     match t {
         "DATE" => format!("D#{y:04}-{mo:02}-{d:02}"),
-        "TOD" => format!("TOD#{clock}"),
-        _ => format!("DT#{y:04}-{mo:02}-{d:02}-{clock}"),
+        "LDATE" => format!("LDATE#{y:04}-{mo:02}-{d:02}"),
+        "TOD" | "LTOD" => format!("{t}#{clock}"),
+        _ => format!("{t}#{y:04}-{mo:02}-{d:02}-{clock}"),
     }
 }
 
@@ -291,11 +315,15 @@ fn string_to(s: &str, t: &str) -> Want {
             "T#1500ms" => 1_500_000_000,
             _ => 0,
         }),
-        "DATE" | "TOD" | "DT" => {
-            let ns = match (t, s) {
+        _ if is_date(t) => {
+            // a long form reads its own prefix and the short one's
+            let ns = match (kind(t), s) {
                 ("DATE", "D#2024-01-31") => 19753 * 86_400_000_000_000,
                 ("TOD", "TOD#12:30:00") => 45_000_000_000_000,
                 ("DT", "DT#2024-01-31-12:30:00") => 19753 * 86_400_000_000_000 + 45_000_000_000_000,
+                ("DT", "LDT#2024-01-31-12:30:00") if t == "LDT" => {
+                    19753 * 86_400_000_000_000 + 45_000_000_000_000
+                }
                 _ => 0,
             };
             Want::Text(date_text(t, ns))
@@ -391,13 +419,14 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
             } else if is_real(to) {
                 real_of(to, *ns as f64 / date_unit(from) as f64)
             } else if !is_date(to) {
-                // DT and DATE count seconds, TOD milliseconds (CODESYS, TwinCAT, OSCAT)
+                // DT and DATE count seconds, TOD milliseconds (CODESYS, TwinCAT, OSCAT), the
+                // long forms nanoseconds (edition 3)
                 Want::Text(wrap(ns / date_unit(from), to).to_string())
             } else {
                 let day = 86_400_000_000_000i128;
-                Want::Text(match to {
-                    "DATE" => date_text("DATE", ns.div_euclid(day) * day),
-                    "TOD" => date_text("TOD", ns.rem_euclid(day)),
+                Want::Text(match kind(to) {
+                    "DATE" => date_text(to, ns.div_euclid(day) * day),
+                    "TOD" => date_text(to, ns.rem_euclid(day)),
                     _ => date_text(to, *ns),
                 })
             }
@@ -453,11 +482,23 @@ fn catalogue() -> Vec<(String, String, String)> {
         .iter()
         .map(|e| e.name().to_string())
         .collect();
-    names.extend(["STRING", "WSTRING", "TIME_OF_DAY", "DATE_AND_TIME"].map(String::from));
+    names.extend(
+        [
+            "STRING",
+            "WSTRING",
+            "TIME_OF_DAY",
+            "DATE_AND_TIME",
+            "LTIME_OF_DAY",
+            "LDATE_AND_TIME",
+        ]
+        .map(String::from),
+    );
     let canon = |n: &str| -> String {
         match n {
             "TIME_OF_DAY" => "TOD".into(),
             "DATE_AND_TIME" => "DT".into(),
+            "LTIME_OF_DAY" => "LTOD".into(),
+            "LDATE_AND_TIME" => "LDT".into(),
             n => n.into(),
         }
     };

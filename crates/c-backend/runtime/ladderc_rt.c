@@ -586,6 +586,28 @@ int ladderc_parse_value(ladderc_type t, const char *text, void *out, char *err, 
         *(IEC_DT *)out = days * 86400 * (int64_t)1000000000 + tod;
         return 0;
     }
+    case LADDERC_T_LDATE:
+    case LADDERC_T_LTOD:
+    case LADDERC_T_LDT: {
+        /* edition 3's long forms: the short form's text under a long prefix (LDATE#, LD#, LTOD#,
+         * LTIME_OF_DAY#, LDT#, LDATE_AND_TIME#) or a short one */
+        static const char *const pd[] = {"LDATE", "LD", NULL};
+        static const char *const pt[] = {"LTIME_OF_DAY", "LTOD", NULL};
+        static const char *const pdt[] = {"LDATE_AND_TIME", "LDT", NULL};
+        const char *shortp = t == LADDERC_T_LDATE ? "D#" : t == LADDERC_T_LTOD ? "TOD#" : "DT#";
+        ladderc_type st = t == LADDERC_T_LDATE ? LADDERC_T_DATE : t == LADDERC_T_LTOD ? LADDERC_T_TOD : LADDERC_T_DT;
+        char longer[96];
+        size_t ns, nl;
+        s = skip_prefix(text, t == LADDERC_T_LDATE ? pd : t == LADDERC_T_LTOD ? pt : pdt);
+        if (s == text) return ladderc_parse_value(st, text, out, err, errlen);
+        ns = strlen(shortp);
+        nl = strlen(s);
+        if (ns + nl >= sizeof longer)
+            return fail(err, errlen, "expected a date or time of day", text);
+        memcpy(longer, shortp, ns);
+        memcpy(longer + ns, s, nl + 1);
+        return ladderc_parse_value(st, longer, out, err, errlen);
+    }
     case LADDERC_T_STRING: {
         /* UTF-8 text; a STRING holds each character U+0000-U+00FF as one byte (ISO 8859-1) */
         size_t len = strlen(text), count = 0, i;
@@ -809,11 +831,14 @@ void ladderc_format_value(ladderc_type t, const void *value, char *buf, size_t l
     case LADDERC_T_TIME: case LADDERC_T_LTIME: format_duration(*(const IEC_TIME *)value, buf, len); break;
     case LADDERC_T_DATE: format_datetime("D", *(const IEC_DATE *)value, 0, buf, len); break;
     case LADDERC_T_DT: format_datetime("DT", *(const IEC_DT *)value, 1, buf, len); break;
-    case LADDERC_T_TOD: {
+    case LADDERC_T_LDATE: format_datetime("LDATE", *(const IEC_LDATE *)value, 0, buf, len); break;
+    case LADDERC_T_LDT: format_datetime("LDT", *(const IEC_LDT *)value, 1, buf, len); break;
+    case LADDERC_T_TOD:
+    case LADDERC_T_LTOD: {
         char clock[32];
         int64_t ns = *(const IEC_TOD *)value;
         format_clock(ns < 0 ? 0 : ns, clock, sizeof clock);
-        snprintf(buf, len, "TOD#%s", clock);
+        snprintf(buf, len, "%s#%s", t == LADDERC_T_TOD ? "TOD" : "LTOD", clock);
         break;
     }
     case LADDERC_T_STRING: {

@@ -59,6 +59,9 @@ typedef int64_t IEC_LTIME; /* nanoseconds */
 typedef int64_t IEC_DATE;  /* nanoseconds since 1970-01-01 (always a whole day) */
 typedef int64_t IEC_TOD;   /* nanoseconds since midnight */
 typedef int64_t IEC_DT;    /* nanoseconds since 1970-01-01T00:00:00 */
+typedef int64_t IEC_LDATE; /* edition 3: as IEC_DATE */
+typedef int64_t IEC_LTOD;  /* edition 3: as IEC_TOD */
+typedef int64_t IEC_LDT;   /* edition 3: as IEC_DT */
 
 #define LADDERC_STRING_CAP 254
 typedef struct {
@@ -525,6 +528,9 @@ LADDERC_STR_DECLS(ladderc_wstr, IEC_WSTRING)
 IEC_DATE ladderc_str_to_date(IEC_STRING s);
 IEC_TOD ladderc_str_to_tod(IEC_STRING s);
 IEC_DT ladderc_str_to_dt(IEC_STRING s);
+IEC_LDATE ladderc_str_to_ldate(IEC_STRING s);
+IEC_LTOD ladderc_str_to_ltod(IEC_STRING s);
+IEC_LDT ladderc_str_to_ldt(IEC_STRING s);
 
 /* ------------------------------------------------------------------ process image access */
 /* Byte order from the profile: LADDERC_BIG_ENDIAN is 0 (little) or 1 (big). Loads and stores go byte by
@@ -625,7 +631,8 @@ typedef enum {
     LADDERC_T_USINT, LADDERC_T_UINT, LADDERC_T_UDINT, LADDERC_T_ULINT,
     LADDERC_T_BYTE, LADDERC_T_WORD, LADDERC_T_DWORD, LADDERC_T_LWORD,
     LADDERC_T_REAL, LADDERC_T_LREAL, LADDERC_T_TIME, LADDERC_T_LTIME,
-    LADDERC_T_DATE, LADDERC_T_TOD, LADDERC_T_DT, LADDERC_T_STRING, LADDERC_T_WSTRING
+    LADDERC_T_DATE, LADDERC_T_TOD, LADDERC_T_DT, LADDERC_T_STRING, LADDERC_T_WSTRING,
+    LADDERC_T_LDATE, LADDERC_T_LTOD, LADDERC_T_LDT
 } ladderc_type;
 
 /* A watchable variable: either in memory (ptr) or located in an area (area != NULL: offset, bit). */

@@ -114,3 +114,6 @@ static int64_t ladderc_str_to_datetime(IEC_STRING s, ladderc_type t, const char 
 IEC_DATE ladderc_str_to_date(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_DATE, "D#"); }
 IEC_TOD ladderc_str_to_tod(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_TOD, "TOD#"); }
 IEC_DT ladderc_str_to_dt(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_DT, "DT#"); }
+IEC_LDATE ladderc_str_to_ldate(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_LDATE, "LDATE#"); }
+IEC_LTOD ladderc_str_to_ltod(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_LTOD, "LTOD#"); }
+IEC_LDT ladderc_str_to_ldt(IEC_STRING s) { return ladderc_str_to_datetime(s, LADDERC_T_LDT, "LDT#"); }

@@ -33,6 +33,9 @@ pub fn elementary(e: Elementary) -> &'static str {
         E::Date => "IEC_DATE",
         E::Tod => "IEC_TOD",
         E::Dt => "IEC_DT",
+        E::Ldate => "IEC_LDATE",
+        E::Ltod => "IEC_LTOD",
+        E::Ldt => "IEC_LDT",
     }
 }
 
@@ -59,6 +62,9 @@ pub fn type_tag(e: Elementary) -> &'static str {
         E::Date => "LADDERC_T_DATE",
         E::Tod => "LADDERC_T_TOD",
         E::Dt => "LADDERC_T_DT",
+        E::Ldate => "LADDERC_T_LDATE",
+        E::Ltod => "LADDERC_T_LTOD",
+        E::Ldt => "LADDERC_T_LDT",
     }
 }
 
@@ -74,7 +80,9 @@ pub fn ordered_helper_type(e: Elementary) -> &'static str {
         E::Dint => "IEC_DINT",
         E::Real => "IEC_REAL",
         E::Lreal => "IEC_LREAL",
-        E::Lint | E::Time | E::Ltime | E::Date | E::Tod | E::Dt => "IEC_LINT",
+        E::Lint | E::Time | E::Ltime | E::Date | E::Tod | E::Dt | E::Ldate | E::Ltod | E::Ldt => {
+            "IEC_LINT"
+        }
     }
 }
 
@@ -90,7 +98,9 @@ pub fn arith_helper_type(e: Elementary) -> Option<&'static str> {
         E::Sint => Some("IEC_SINT"),
         E::Int => Some("IEC_INT"),
         E::Dint => Some("IEC_DINT"),
-        E::Lint | E::Time | E::Ltime | E::Date | E::Tod | E::Dt => Some("IEC_LINT"),
+        E::Lint | E::Time | E::Ltime | E::Date | E::Tod | E::Dt | E::Ldate | E::Ltod | E::Ldt => {
+            Some("IEC_LINT")
+        }
     }
 }
 

@@ -244,6 +244,11 @@ pub fn is_elementary(u: &str) -> bool {
             | "TOD"
             | "DATE_AND_TIME"
             | "DT"
+            | "LDATE"
+            | "LTOD"
+            | "LTIME_OF_DAY"
+            | "LDT"
+            | "LDATE_AND_TIME"
             | "STRING"
             | "WSTRING"
             | "BYTE"
@@ -406,6 +411,11 @@ fn static_name(u: &str) -> Option<&'static str> {
         "TOD",
         "DATE_AND_TIME",
         "DT",
+        "LDATE",
+        "LTOD",
+        "LTIME_OF_DAY",
+        "LDT",
+        "LDATE_AND_TIME",
         "STRING",
         "WSTRING",
         "BYTE",
@@ -438,7 +448,7 @@ pub enum Family {
 /// The family of an elementary type name (case-insensitive); `None` for user and FB types.
 pub fn family(type_name: &str) -> Option<Family> {
     // Compared without case instead of upper-casing a copy: called for every contact and coil.
-    const FAMILIES: [(&str, Family); 24] = [
+    const FAMILIES: [(&str, Family); 29] = [
         ("BOOL", Family::Bool),
         ("SINT", Family::Int),
         ("INT", Family::Int),
@@ -461,6 +471,11 @@ pub fn family(type_name: &str) -> Option<Family> {
         ("TOD", Family::Date),
         ("DATE_AND_TIME", Family::Date),
         ("DT", Family::Date),
+        ("LDATE", Family::Date),
+        ("LTOD", Family::Date),
+        ("LTIME_OF_DAY", Family::Date),
+        ("LDT", Family::Date),
+        ("LDATE_AND_TIME", Family::Date),
         ("STRING", Family::String),
         ("WSTRING", Family::String),
     ];

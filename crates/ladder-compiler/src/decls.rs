@@ -40,6 +40,9 @@ fn elementary(name: &str) -> Option<&'static str> {
         "DATE" => "DATE",
         "DT" => "DT",
         "TOD" => "TOD",
+        "LDATE" => "LDATE",
+        "LDT" => "LDT",
+        "LTOD" => "LTOD",
         _ => return None,
     })
 }

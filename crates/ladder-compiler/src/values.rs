@@ -227,17 +227,23 @@ pub fn literal(t: &str, span: Span) -> Option<Literal> {
             "T" | "TIME" | "LTIME" | "LT" => {
                 return duration(value).map(|d| lit(LiteralKind::Duration(d), None, span))
             }
-            "D" | "DATE" => return date(value).map(|d| lit(LiteralKind::Date(d), None, span)),
-            "TOD" | "TIME_OF_DAY" => {
-                return time_of_day(value).map(|n| lit(LiteralKind::TimeOfDay(n), None, span))
+            // edition 3's long forms keep their canonical name as the prefix (their type)
+            "D" | "DATE" | "LDATE" | "LD" => {
+                let long = p.starts_with('L').then_some("LDATE");
+                return date(value).map(|d| lit(LiteralKind::Date(d), long, span));
             }
-            "DT" | "DATE_AND_TIME" => {
+            "TOD" | "TIME_OF_DAY" | "LTOD" | "LTIME_OF_DAY" => {
+                let long = p.starts_with('L').then_some("LTOD");
+                return time_of_day(value).map(|n| lit(LiteralKind::TimeOfDay(n), long, span));
+            }
+            "DT" | "DATE_AND_TIME" | "LDT" | "LDATE_AND_TIME" => {
+                let long = p.starts_with('L').then_some("LDT");
                 let (d, tod) = value.rsplit_once('-')?;
                 let days = date(d)?;
                 let ns = time_of_day(tod)?;
                 return Some(lit(
                     LiteralKind::DateAndTime(days as i128 * 86_400_000_000_000 + ns as i128),
-                    None,
+                    long,
                     span,
                 ));
             }

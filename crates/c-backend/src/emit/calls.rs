@@ -849,7 +849,7 @@ impl Gen<'_> {
                     _ if t.is_integer() || t.is_bit() => {
                         convert_elementary(&cfmt!("ladderc_str_to_uint({v})"), E::Ulint, t)
                     }
-                    E::Date | E::Tod | E::Dt => super::strings::string_to_datetime(v, t),
+                    _ if t.is_date() => super::strings::string_to_datetime(v, t),
                     _ => {
                         self.unsupported(span, "converting a STRING to a date or time of day");
                         return None;

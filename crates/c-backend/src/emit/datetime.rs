@@ -1,5 +1,5 @@
 //! The time and date functions called by their typed names: `ADD_TIME`, `SUB_DT_DT`, `MUL_TIME` ...
-//! (the `TIME_ARITH` overloads of ADD/SUB/MUL/DIV) and `CONCAT_DATE_TOD`.
+//! (the `TIME_ARITH` overloads of ADD/SUB/MUL/DIV), `CONCAT_DATE_TOD` and `CONCAT_LDATE_LTOD`.
 //!
 //! Input: the function's name and its evaluated arguments with their IEC types. Output: one
 //! side-effect-free C expression of the result type. Invariants: a named overload computes exactly what
@@ -13,7 +13,9 @@ use il_frontend::sema::{stdlib, Type};
 
 /// Whether `name` is a typed time/date function this module emits.
 pub fn is_datetime_function(name: &str) -> bool {
-    name == "CONCAT_DATE_TOD" || stdlib::TIME_ARITH.iter().any(|t| t.0 == name)
+    name == "CONCAT_DATE_TOD"
+        || name == "CONCAT_LDATE_LTOD"
+        || stdlib::TIME_ARITH.iter().any(|t| t.0 == name)
 }
 
 impl Gen<'_> {
@@ -29,7 +31,7 @@ impl Gen<'_> {
             self.unsupported(span, format!("{name} with {} inputs", vals.len()));
             return None;
         };
-        if name == "CONCAT_DATE_TOD" {
+        if name == "CONCAT_DATE_TOD" || name == "CONCAT_LDATE_LTOD" {
             return Some(format!(
                 "((IEC_DT)(uint64_t)((uint64_t)({a}) + (uint64_t)({b})))"
             ));

@@ -12,11 +12,15 @@ use super::Gen;
 use diagnostics::Span;
 use il_frontend::sema::{Elementary, Type};
 
-/// `STRING_TO_DATE`, `STRING_TO_TOD`, `STRING_TO_DT` of the C string value `v` (`t` is the target).
+/// `STRING_TO_DATE`, `STRING_TO_TOD`, `STRING_TO_DT` (and their long forms `STRING_TO_LDT` ...) of
+/// the C string value `v` (`t` is the target).
 pub fn string_to_datetime(v: &str, t: Elementary) -> String {
     let f = match t {
         Elementary::Date => "date",
         Elementary::Tod => "tod",
+        Elementary::Ldate => "ldate",
+        Elementary::Ltod => "ltod",
+        Elementary::Ldt => "ldt",
         _ => "dt",
     };
     format!("ladderc_str_to_{f}({v})")

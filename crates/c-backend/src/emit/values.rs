@@ -124,9 +124,11 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     }
     if time_like(f) {
         if time_like(t) {
-            return match (f, t) {
-                (E::Dt, E::Date) => cfmt!("ladderc_dt_to_date({x})"),
-                (E::Dt, E::Tod) => cfmt!("ladderc_dt_to_tod({x})"),
+            // DT and LDT to a date or a time of day of either length; the rest keeps its
+            // nanoseconds (TIME <-> LTIME, DATE <-> LDATE, TOD <-> LTOD, DT <-> LDT)
+            return match (f.date_kind(), t.date_kind()) {
+                (Some(E::Dt), Some(E::Date)) => cfmt!("ladderc_dt_to_date({x})"),
+                (Some(E::Dt), Some(E::Tod)) => cfmt!("ladderc_dt_to_tod({x})"),
                 _ => cfmt!("(({ct})({x}))"),
             };
         }
@@ -153,20 +155,22 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
 /// A number converted to DATE keeps the day (the time of day dropped: `DWORD_TO_DATE(86401)` is
 /// D#1970-01-02), to TOD the time of day, as a DATE or TOD variable holds nothing else.
 fn within_day(ns: &str, t: Elementary) -> String {
-    match t {
-        E::Date => cfmt!("ladderc_dt_to_date({ns})"),
-        E::Tod => cfmt!("ladderc_dt_to_tod({ns})"),
+    match t.date_kind() {
+        Some(E::Date) => cfmt!("ladderc_dt_to_date({ns})"),
+        Some(E::Tod) => cfmt!("ladderc_dt_to_tod({ns})"),
         _ => ns.to_string(),
     }
 }
 
 /// The nanoseconds of one unit of the number a duration or date converts to and from: milliseconds
 /// for TIME, LTIME and TOD, seconds for DT and DATE (since 1970-01-01), as CODESYS, TwinCAT and
-/// OSCAT count them (`DT_TO_UDINT`, `TOD_TO_DWORD(t) / 3600000` for the hour); as a C integer and
-/// as a C double.
+/// OSCAT count them (`DT_TO_UDINT`, `TOD_TO_DWORD(t) / 3600000` for the hour); nanoseconds for
+/// edition 3's LDATE, LTOD and LDT (IEC 61131-3 edition 3, Table 10: their value is in
+/// nanoseconds); as a C integer and as a C double.
 fn number_unit(e: Elementary) -> (&'static str, &'static str) {
     match e {
         E::Dt | E::Date => ("INT64_C(1000000000)", "1e9"),
+        E::Ldate | E::Ltod | E::Ldt => ("INT64_C(1)", "1.0"),
         _ => ("INT64_C(1000000)", "1e6"),
     }
 }

@@ -1766,8 +1766,10 @@ pub fn reserved_name(name: &str) -> Option<&'static str> {
     let is = |k: &&str| k.eq_ignore_ascii_case(name);
     if may_be_keyword && KEYWORDS.iter().any(is) {
         Some("a keyword")
-    } else if Elementary::from_name(name).is_some() || ["STRING", "WSTRING", "LTIME"].iter().any(is)
+    } else if Elementary::from_name(name).is_some_and(|e| !e.is_long_date())
+        || ["STRING", "WSTRING", "LTIME"].iter().any(is)
     {
+        // (edition 3's LDATE, LTOD, LDT are not reserved: edition-2 projects name variables so)
         Some("an elementary data type")
     } else if StdFb::from_name(name).is_some() {
         Some("a standard function block")

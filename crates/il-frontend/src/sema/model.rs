@@ -63,13 +63,21 @@ pub enum Elementary {
     Tod,
     /// `DT` / `DATE_AND_TIME`: nanoseconds since 1970-01-01T00:00:00.
     Dt,
+    /// `LDATE` (IEC 61131-3 edition 3): a calendar date, nanoseconds since 1970-01-01 (its
+    /// midnight); as a number, nanoseconds.
+    Ldate,
+    /// `LTOD` / `LTIME_OF_DAY` (edition 3): nanoseconds since midnight; as a number, nanoseconds.
+    Ltod,
+    /// `LDT` / `LDATE_AND_TIME` (edition 3): nanoseconds since 1970-01-01T00:00:00; as a number,
+    /// nanoseconds.
+    Ldt,
 }
 
 use Elementary as E;
 
 impl Elementary {
     /// Every elementary type, in declaration order.
-    pub const ALL: [Elementary; 20] = [
+    pub const ALL: [Elementary; 23] = [
         E::Bool,
         E::Sint,
         E::Int,
@@ -90,6 +98,9 @@ impl Elementary {
         E::Date,
         E::Tod,
         E::Dt,
+        E::Ldate,
+        E::Ltod,
+        E::Ldt,
     ];
 
     /// The canonical IEC name (`TOD`, `DT`: the short forms).
@@ -115,6 +126,9 @@ impl Elementary {
             E::Date => "DATE",
             E::Tod => "TOD",
             E::Dt => "DT",
+            E::Ldate => "LDATE",
+            E::Ltod => "LTOD",
+            E::Ldt => "LDT",
         }
     }
 
@@ -125,6 +139,12 @@ impl Elementary {
         }
         if name.eq_ignore_ascii_case("DATE_AND_TIME") {
             return Some(E::Dt);
+        }
+        if name.eq_ignore_ascii_case("LTIME_OF_DAY") {
+            return Some(E::Ltod);
+        }
+        if name.eq_ignore_ascii_case("LDATE_AND_TIME") {
+            return Some(E::Ldt);
         }
 
         Elementary::ALL
@@ -140,7 +160,7 @@ impl Elementary {
             E::Int | E::Uint | E::Word => 16,
             E::Dint | E::Udint | E::Dword | E::Real => 32,
             E::Lint | E::Ulint | E::Lword | E::Lreal => 64,
-            E::Time | E::Ltime | E::Date | E::Tod | E::Dt => 64,
+            E::Time | E::Ltime | E::Date | E::Tod | E::Dt | E::Ldate | E::Ltod | E::Ldt => 64,
         }
     }
     /// Storage size in bytes (BOOL: 1).
@@ -185,9 +205,24 @@ impl Elementary {
     pub fn is_duration(self) -> bool {
         matches!(self, E::Time | E::Ltime)
     }
-    /// ANY_DATE = DATE TOD DT.
+    /// ANY_DATE = DATE TOD DT LDATE LTOD LDT.
     pub fn is_date(self) -> bool {
-        matches!(self, E::Date | E::Tod | E::Dt)
+        matches!(self, E::Date | E::Tod | E::Dt | E::Ldate | E::Ltod | E::Ldt)
+    }
+    /// The edition-2 type a date type holds the same kind of value as: DATE for DATE and LDATE,
+    /// TOD for TOD and LTOD, DT for DT and LDT (`None` for the others). Both are stored alike
+    /// (nanoseconds); they differ in the number they convert to (see `stdlib::conversion_allowed`).
+    pub fn date_kind(self) -> Option<Elementary> {
+        match self {
+            E::Date | E::Ldate => Some(E::Date),
+            E::Tod | E::Ltod => Some(E::Tod),
+            E::Dt | E::Ldt => Some(E::Dt),
+            _ => None,
+        }
+    }
+    /// LDATE, LTOD, LDT: the date types whose number is nanoseconds.
+    pub fn is_long_date(self) -> bool {
+        matches!(self, E::Ldate | E::Ltod | E::Ldt)
     }
     /// The value range of an integer type (`None` for other types); BYTE..LWORD give their unsigned range.
     pub fn int_range(self) -> Option<(i128, i128)> {

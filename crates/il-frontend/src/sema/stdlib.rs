@@ -277,6 +277,15 @@ pub static FUNCTIONS: &[StdFunction] = &[
     f("DIV_TIME", TIME_NUM, false, Ret::Fixed(E::Time), "TIME / ANY_NUM (0 for a zero divisor)"),
     f("DIV_LTIME", LTIME_NUM, false, Ret::Fixed(E::Ltime), "LTIME / ANY_NUM (0 for a zero divisor)"),
     f("CONCAT_DATE_TOD", &fx2(E::Date, E::Tod), false, Ret::Fixed(E::Dt), "the DT of a DATE at a TOD"),
+    // edition 3's long dates (Table 36)
+    f("ADD_LTOD_LTIME", &fx2(E::Ltod, E::Ltime), false, Ret::Fixed(E::Ltod), "LTOD + LTIME"),
+    f("ADD_LDT_LTIME", &fx2(E::Ldt, E::Ltime), false, Ret::Fixed(E::Ldt), "LDT + LTIME"),
+    f("SUB_LDATE_LDATE", &fx2(E::Ldate, E::Ldate), false, Ret::Fixed(E::Ltime), "LDATE - LDATE"),
+    f("SUB_LTOD_LTIME", &fx2(E::Ltod, E::Ltime), false, Ret::Fixed(E::Ltod), "LTOD - LTIME"),
+    f("SUB_LTOD_LTOD", &fx2(E::Ltod, E::Ltod), false, Ret::Fixed(E::Ltime), "LTOD - LTOD"),
+    f("SUB_LDT_LTIME", &fx2(E::Ldt, E::Ltime), false, Ret::Fixed(E::Ldt), "LDT - LTIME"),
+    f("SUB_LDT_LDT", &fx2(E::Ldt, E::Ldt), false, Ret::Fixed(E::Ltime), "LDT - LDT"),
+    f("CONCAT_LDATE_LTOD", &fx2(E::Ldate, E::Ltod), false, Ret::Fixed(E::Ldt), "the LDT of an LDATE at an LTOD"),
     // CODESYS and TwinCAT: `TIME()` is the time since the controller started (here the scan
     // clock, the time of the current cycle, as the timers read it)
     f("TIME", &[], false, Ret::Fixed(E::Time), "the time since start (the scan clock; CODESYS, TwinCAT)"),
@@ -425,6 +434,13 @@ pub static TIME_ARITH: &[(&str, &str, E, Option<E>, E)] = &[
     ("MUL_LTIME", "MUL", E::Ltime, None, E::Ltime),
     ("DIV_TIME", "DIV", E::Time, None, E::Time),
     ("DIV_LTIME", "DIV", E::Ltime, None, E::Ltime),
+    ("ADD_LTOD_LTIME", "ADD", E::Ltod, Some(E::Ltime), E::Ltod),
+    ("ADD_LDT_LTIME", "ADD", E::Ldt, Some(E::Ltime), E::Ldt),
+    ("SUB_LDATE_LDATE", "SUB", E::Ldate, Some(E::Ldate), E::Ltime),
+    ("SUB_LTOD_LTIME", "SUB", E::Ltod, Some(E::Ltime), E::Ltod),
+    ("SUB_LTOD_LTOD", "SUB", E::Ltod, Some(E::Ltod), E::Ltime),
+    ("SUB_LDT_LTIME", "SUB", E::Ldt, Some(E::Ltime), E::Ldt),
+    ("SUB_LDT_LDT", "SUB", E::Ldt, Some(E::Ldt), E::Ltime),
 ];
 
 /// The time/date overload of `op` for a first input of type `in1`, if any.
@@ -476,7 +492,9 @@ fn conv_type(name: &str) -> Option<Type> {
 /// Whether `X_TO_Y` exists: numbers, bit strings and BOOL convert among themselves; TIME/LTIME convert
 /// with each other and with integers, reals, bit strings and BOOL (milliseconds); DT converts to
 /// DATE and TOD; DT, DATE and TOD convert with numbers and bit strings (CODESYS, TwinCAT, matiec,
-/// OSCAT: DT and DATE as seconds since 1970-01-01, TOD as milliseconds since midnight);
+/// OSCAT: DT and DATE as seconds since 1970-01-01, TOD as milliseconds since midnight; edition 3's
+/// LDT, LDATE and LTOD as nanoseconds); a date type converts to its long or short form (`DT_TO_LDT`,
+/// `LTOD_TO_TOD`), and DT and LDT to the date and the time of day of either length;
 /// everything elementary converts to and from STRING/WSTRING.
 pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
     let (f, t) = (from.elementary(), to.elementary());
@@ -490,7 +508,9 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
             (plain(f) && plain(t))
                 || (f.is_duration() && (t.is_duration() || plain(t)))
                 || (t.is_duration() && plain(f))
-                || (f == E::Dt && matches!(t, E::Date | E::Tod | E::Dt))
+                || (f.is_date()
+                    && t.is_date()
+                    && (f.date_kind() == t.date_kind() || f.date_kind() == Some(E::Dt)))
                 || (f.is_date() && plain(t))
                 || (t.is_date() && plain(f))
                 || (f == t)

@@ -34,6 +34,10 @@ pub fn widens(from: Elementary, to: Elementary) -> bool {
         E::Word => matches!(to, E::Dword | E::Lword),
         E::Dword => to == E::Lword,
         E::Time => to == E::Ltime,
+        // edition 3's long date types hold the same nanoseconds (IEC 61131-3 edition 3, 6.4.2)
+        E::Date => to == E::Ldate,
+        E::Tod => to == E::Ltod,
+        E::Dt => to == E::Ldt,
         _ => false,
     }
 }
@@ -161,6 +165,15 @@ pub struct LitError {
     pub hint: String,
 }
 
+/// A date, time-of-day or date-and-time literal's type: its long form (`LDATE#`, `LTOD#`,
+/// `LDT#`: the parser's canonical prefix) or `short`.
+fn long_or(prefix: Option<(String, Option<Elementary>)>, short: Elementary) -> Elementary {
+    match prefix.and_then(|(_, e)| e) {
+        Some(e) if e.is_long_date() && e.date_kind() == Some(short) => e,
+        _ => short,
+    }
+}
+
 /// Types a literal; checks typed literals (`INT#40000`) against their type's range.
 pub fn literal_type(lit: &Literal) -> Result<LitType, LitError> {
     let prefix = lit
@@ -227,9 +240,9 @@ pub fn literal_type(lit: &Literal) -> Result<LitType, LitError> {
                 E::Time
             },
         ))),
-        (LiteralKind::Date(_), _) => Ok(LitType::Known(Type::Elementary(E::Date))),
-        (LiteralKind::TimeOfDay(_), _) => Ok(LitType::Known(Type::Elementary(E::Tod))),
-        (LiteralKind::DateAndTime(_), _) => Ok(LitType::Known(Type::Elementary(E::Dt))),
+        (LiteralKind::Date(_), p) => Ok(LitType::Known(Type::Elementary(long_or(p, E::Date)))),
+        (LiteralKind::TimeOfDay(_), p) => Ok(LitType::Known(Type::Elementary(long_or(p, E::Tod)))),
+        (LiteralKind::DateAndTime(_), p) => Ok(LitType::Known(Type::Elementary(long_or(p, E::Dt)))),
         (LiteralKind::String { wide, value }, _) => Ok(LitType::Known(Type::String {
             wide: *wide,
             len: value.chars().count().max(1) as u32,
