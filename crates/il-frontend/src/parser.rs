@@ -855,8 +855,8 @@ impl<'s> Ctx<'s> {
         TypeRef::Named(name)
     }
 
-    /// `name := ADR(of)` / `REF(of)` in a structure or instance initializer: the address of `of`
-    /// (another function is no initial value: E0022).
+    /// `name := ADR(of)` / `REF(of)` in a structure or instance initializer: the address of `of`;
+    /// `name := SIZEOF(of)`: its size, a constant (another function is no initial value: E0022).
     pub fn address_element(
         &mut self,
         name: Ident,
@@ -867,6 +867,19 @@ impl<'s> Ctx<'s> {
     ) -> (Ident, Initializer) {
         let callee = self.ident(l, n);
         let span = self.span(l, r);
+        if callee.is("SIZEOF") {
+            // `nSize := SIZEOF(values)` (TwinCAT: a constant): the size in the generated C, as
+            // in any constant expression (`Ctx::const_call`)
+            let e = if of.accessors.is_empty() {
+                self.const_call(l, n, vec![BoundExpr::Name(of.base)], r)
+            } else {
+                BoundExpr::NoValue(
+                    "`SIZEOF(...)` is computed in a constant expression for a type or a variable's name".into(),
+                    span,
+                )
+            };
+            return (name, self.init_expr(e, l, r));
+        }
         if !(callee.is("ADR") || callee.is("REF")) {
             self.hint(
                 code::E0022,

@@ -637,15 +637,30 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagno
 }
 
 fn operand(o: &mut Operand, axes: &Axes, used: &mut Used, diags: &mut Diagnostics) {
-    if let Operand::Var(v) = o {
-        if let Some(kind) = member(v, axes, used, diags) {
-            // reported: the literal (FALSE for a status flag, 0 for an NC value) stops a second report
-            *o = Operand::literal(Literal {
-                kind,
-                type_prefix: None,
-                span: v.span,
-            });
+    match o {
+        Operand::Var(v) => {
+            if let Some(kind) = member(v, axes, used, diags) {
+                // reported: the literal (FALSE for a status flag, 0 for an NC value) stops a
+                // second report
+                *o = Operand::literal(Literal {
+                    kind,
+                    type_prefix: None,
+                    span: v.span,
+                });
+            }
         }
+        // `ADR(Axis.NcToPlc.ActPos)`: the address of the hidden block's output that the member
+        // reads, refreshed at the start of every scan as the NC refreshes the member (before:
+        // E1021 "AXIS_REF has no field NcToPlc"); a member without a counterpart (E1042
+        // reported) is NULL
+        Operand::Ref(r) => {
+            if let Some(v) = &mut r.of {
+                if member(v, axes, used, diags).is_some() {
+                    r.of = None;
+                }
+            }
+        }
+        _ => {}
     }
 }
 

@@ -206,8 +206,85 @@ pub(crate) fn declared_types(units: &[CompilationUnit]) -> DeclaredTypes {
     (structs, globals)
 }
 
+/// `fbPower.Override := x;` / `y := fbPower.Override;` of an MC_Power instance called
+/// unconditionally in `body` without an `Override` argument: the field is a hidden LREAL
+/// (100.0 until written, [`crate::tc2_override::written_field`]) that the calls then pass as
+/// their `Override`. Returns the instances (their keys) and the hidden variables' names.
+fn override_fields(
+    body: &mut [IlStmt],
+    inst: &HashMap<String, String>,
+    hidden: &mut Vec<VarDecl>,
+) -> HashMap<String, String> {
+    let is_power = |k: &str| {
+        inst.get(k)
+            .is_some_and(|b| b.eq_ignore_ascii_case("MC_POWER"))
+    };
+    let field = |v: &VarRef| {
+        matches!(v.accessors.as_slice(), [Accessor::Field(f)] if f.key() == "OVERRIDE")
+            && is_power(&v.base.key())
+    };
+    // the instances whose every call is unconditional and leaves Override out
+    let mut calls: HashMap<String, bool> = HashMap::new();
+    let mut written: HashMap<String, Ident> = HashMap::new();
+    for s in body.iter() {
+        let IlStmt::Instr(i) = s else { continue };
+        match &i.kind {
+            InstrKind::Call {
+                instance,
+                args,
+                cond,
+            } if instance.accessors.is_empty() && is_power(&instance.base.key()) => {
+                let plain = matches!(cond, Condition::Always)
+                    && match args {
+                        CallArgs::Formal(list) => !list.iter().any(|a| a.name.key() == "OVERRIDE"),
+                        _ => true,
+                    };
+                let ok = calls.entry(instance.base.key()).or_insert(true);
+                *ok &= plain;
+            }
+            InstrKind::Simple {
+                op: il_frontend::ast::Op::St,
+                operand: Some(Operand::Var(v)),
+                ..
+            } if field(v) => {
+                written.insert(v.base.key(), v.base.clone());
+            }
+            _ => {}
+        }
+    }
+    let mut names = HashMap::new();
+    for (key, base) in written {
+        if calls.get(&key) != Some(&true) {
+            continue;
+        }
+        let (name, decl) = crate::tc2_override::written_field(&base);
+        if !hidden.iter().any(|h| h.name.key() == decl.name.key()) {
+            hidden.push(decl);
+        }
+        names.insert(key, name);
+    }
+    if names.is_empty() {
+        return names;
+    }
+    for s in body.iter_mut() {
+        let IlStmt::Instr(i) = s else { continue };
+        if let InstrKind::Simple {
+            operand: Some(Operand::Var(v)),
+            ..
+        } = &mut i.kind
+        {
+            if let Some(name) = names.get(&v.base.key()).filter(|_| field(v)) {
+                v.base = Ident::new(name, v.base.span);
+                v.accessors = Vec::new().into();
+            }
+        }
+    }
+    names
+}
+
 fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut Diagnostics) {
     let inst = cx.inst;
+    let fields = override_fields(body, inst, hidden);
     let mut after: Vec<(usize, Vec<IlStmt>)> = Vec::new();
     for (k, s) in body.iter_mut().enumerate() {
         let IlStmt::Instr(i) = s else { continue };
@@ -261,6 +338,17 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                                 None => true,
                             }
                         });
+                        // the `Override` field the program writes (`override_fields`)
+                        if let Some(name) = fields.get(&instance.base.key()) {
+                            let at = instance.span;
+                            scale.get_or_insert_with(|| {
+                                Operand::Var(VarRef {
+                                    base: Ident::new(name, at),
+                                    accessors: Vec::new().into(),
+                                    span: at,
+                                })
+                            });
+                        }
                         if let Some(value) = scale {
                             let axis = list.iter().find(|a| a.name.key() == "AXIS");
                             if let Some(axis) = axis {

@@ -141,3 +141,20 @@ pub fn set_override(
     ];
     (decls, code)
 }
+
+/// The hidden LREAL (initial value 100.0) that holds `instance.Override` as the program writes it
+/// (`fbPower.Override := nPct;`, an input written before the call, IEC 61131-3 6.6.1.2): its
+/// name, and its declaration.
+pub fn written_field(instance: &Ident) -> (String, VarDecl) {
+    let at = instance.span;
+    let name = format!("__TC2_OVR_{}_FIELD", instance.key());
+    let decl = VarDecl {
+        name: Ident::new(&name, at),
+        location: None,
+        ty: TypeRef::Named(Ident::new("LREAL", at)),
+        init: Some(il_frontend::ast::Initializer::Value(real(100.0, at))),
+        edge: None,
+        span: at,
+    };
+    (name, decl)
+}

@@ -293,11 +293,18 @@ impl Body<'_, '_> {
                         )
                         .label(format!("this is {bn}"))
                         .also(sa, format!("{first} is {an}"))
-                        .hint(format!(
-                            "convert one side explicitly ({})",
-                            conversion_hint(&bn, &an)
-                                .trim_start_matches("convert explicitly with ")
-                        ));
+                        .hint(match holding_both(&a, &b) {
+                            // `i < u` of an INT and a UDINT: UDINT_TO_INT would change the outcome
+                            // of a large u, INT_TO_UDINT that of a negative i
+                            Some(c) => format!(
+                                "convert both to {c}, which holds every value of each ({an}_TO_{c}, {bn}_TO_{c})"
+                            ),
+                            None => format!(
+                                "convert one side explicitly ({})",
+                                conversion_hint(&bn, &an)
+                                    .trim_start_matches("convert explicitly with ")
+                            ),
+                        });
                     return Inst {
                         name: f.name,
                         t: Ty::ERROR,
@@ -1641,4 +1648,23 @@ fn any_address_refused(b: &mut Body, at: Span, pname: &str, callee: &str, from: 
     )
     .label(format!("this is {of}"))
     .hint("bytes written through `.pValue` could make a reference; pass a variable whose type holds numbers, strings, enumerations, arrays and structures of these");
+}
+
+/// The smallest integer or real type that both elementary numbers `a` and `b` widen to implicitly
+/// (INT and UDINT: LINT; UINT and INT: DINT), when neither widens to the other; `None` otherwise.
+fn holding_both(a: &Type, b: &Type) -> Option<Elementary> {
+    let (a, b) = (a.elementary()?, b.elementary()?);
+    if !(a.is_numeric() && b.is_numeric()) {
+        return None;
+    }
+    Elementary::ALL
+        .into_iter()
+        .filter(|&c| {
+            c.is_numeric()
+                && c != a
+                && c != b
+                && super::typing::widens(a, c)
+                && super::typing::widens(b, c)
+        })
+        .min_by_key(|c| (c.bit_width(), c.is_real()))
 }

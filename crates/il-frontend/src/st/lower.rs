@@ -1464,7 +1464,7 @@ impl<'d> PouLowering<'d> {
         };
         // A plain name that is not a variable but a function: a function call whose result is dropped.
         if let Some(name) = callee.name() {
-            if self.env().var_type(name).is_none() {
+            if self.env().var_type(name).is_none() || self.function_beside_global(name) {
                 if self
                     .decls
                     .pou(&name.name)
@@ -2655,7 +2655,11 @@ impl<'d> PouLowering<'d> {
             }
             return;
         }
-        if let Some(t) = self.env().var_type(name) {
+        if let Some(t) = self
+            .env()
+            .var_type(name)
+            .filter(|_| !self.function_beside_global(name))
+        {
             let fb = self.env().is_fb_type(&t);
             diags.push(
                 Diagnostic::error(

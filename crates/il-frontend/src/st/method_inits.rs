@@ -185,7 +185,16 @@ fn several_fields(
             return Err(None);
         }
         let rest = &toks[2..];
-        if is_run_time_value(rest) || rest.iter().any(word_is_this) {
+        // `n := SIZEOF(values)`: a constant the declaration's parse computes (`Ctx::address_element`)
+        let size_of_name = matches!(
+            rest,
+            [f, open, arg, close] if f.tok == Tok::Ident
+                && decls.get(f.range.clone()).is_some_and(|w| w.eq_ignore_ascii_case("SIZEOF"))
+                && open.tok == Tok::LParen
+                && arg.tok == Tok::Ident
+                && close.tok == Tok::RParen
+        );
+        if !size_of_name && (is_run_time_value(rest) || rest.iter().any(word_is_this)) {
             run_time.push((sep, a, b));
         }
     }

@@ -669,6 +669,28 @@ impl<'s, 'd> Parser<'s, 'd> {
                 self.sync();
                 return None;
             }
+            // `1:` / `1, 2:` / `1..3:` where a statement should be: the labels of a CASE whose
+            // `CASE x OF` line is missing. One error; the labels and their statements up to the
+            // `END_CASE` are skipped (each label would be one more error, END_CASE another)
+            Tok::Int(_) | Tok::TypePrefix
+                if matches!(self.peek_at(1), Tok::Colon | Tok::Comma | Tok::DotDot) =>
+            {
+                self.error_here(
+                    code::E0100,
+                    "a CASE label outside a CASE statement",
+                    "write `CASE <selector> OF` before the first label",
+                );
+                while !matches!(self.peek(), Tok::Eof | Tok::Kw(Kw::EndCase)) {
+                    self.bump();
+                }
+                if self.at(&Tok::Kw(Kw::EndCase)) {
+                    self.bump();
+                    if self.at(&Tok::Semi) {
+                        self.bump();
+                    }
+                }
+                return None;
+            }
             _ => {
                 let found = self.describe_current();
                 self.error_here(
@@ -1548,9 +1570,10 @@ impl<'s, 'd> Parser<'s, 'd> {
             match self.peek() {
                 Tok::Comma => {
                     self.bump();
-                    if formal_so_far(&args) && self.at(&Tok::RParen) {
-                        // `fb(a := x, q => y, )`: a comma after the last formal argument, as
-                        // TwinCAT accepts it (its editor leaves one after a removed pin)
+                    if !args.is_empty() && self.at(&Tok::RParen) {
+                        // `fb(a := x, q => y, )`, `f(a, b, )`: a comma after the last argument,
+                        // formal or not, as TwinCAT accepts it (its editor leaves one after a
+                        // removed pin; Beckhoff's own samples write `ADSLOGSTR(t, 'm', 'a',)`)
                         self.bump();
                         return Some(args);
                     }
@@ -2006,12 +2029,6 @@ impl<'s, 'd> Parser<'s, 'd> {
         self.bump();
         self.literal(kind, Some(prefix), &p, t.range.end)
     }
-}
-
-/// Whether every argument read so far is formal (`name := x`, `name => y`): only then may a comma
-/// stand before the `)`.
-fn formal_so_far(args: &[Arg]) -> bool {
-    !args.is_empty() && args.iter().all(|a| a.name.is_some())
 }
 
 /// `RETURN (cond);`: `IF cond THEN RETURN; END_IF` spanning `span`.

@@ -26,7 +26,7 @@ use super::super::ast::{
 };
 use super::super::infer::named;
 use super::{place_exprs, PouLowering};
-use crate::ast::{Ident, LiteralKind, TypeRef};
+use crate::ast::{Ident, LiteralKind, PouKind, TypeRef};
 use crate::Span;
 use diagnostics::{code, Diagnostic, Diagnostics};
 
@@ -118,6 +118,22 @@ impl PouLowering<'_> {
             TypeRef::Named(t) => env.decls.pou(&t.name).is_some(),
             _ => false,
         }
+    }
+
+    /// Whether a call `n(...)` names the project's FUNCTION `n` although a global variable has
+    /// the name too: a global of a `{attribute 'qualified_only'}` list (TwinCAT, CODESYS: its
+    /// variables are named `GVL.x` only, so `StartUp()` beside `GVL.startUp` is the function;
+    /// before: E3103 / E2005). A variable of the POU's own, or a global block instance, keeps
+    /// the name.
+    pub(super) fn function_beside_global(&self, n: &Ident) -> bool {
+        if self.vars.contains_key(&n.key()) {
+            return false;
+        }
+        let env = self.env();
+        env.decls
+            .pou(&n.name)
+            .is_some_and(|p| p.kind == PouKind::Function)
+            && env.var_type(n).is_some_and(|t| !env.is_fb_type(&t))
     }
 
     /// The span of the first method call inside `e` (an own method's, or [`METHOD_CALL`]), left
