@@ -16,6 +16,8 @@
 //!   (before: E1021 "AXIS_REF has no field NcToPlc", while the plain read was accepted);
 //! - a comparison of two integer types neither of which holds the other (`INT < UDINT`) hints at
 //!   the type that holds both (`LINT`), not at a conversion that changes the outcome;
+//! - Tc2_System's `PVOID` (an untyped address) is a bounded `POINTER TO BYTE`: `p := ADR(x)`,
+//!   MEMCPY through it, a method returning one (before: E1003 unknown type);
 //! - run-time sites of an `ARRAY [*]` element and of an ANY input's `pValue` are named as written
 //!   (`varlen_arrays_run.rs`, `lang_left_r18.rs`).
 
@@ -218,4 +220,38 @@ END_PROGRAM
         lines[1].ends_with("(hint: convert both to DINT, which holds every value of each (UINT_TO_DINT, INT_TO_DINT))"),
         "{lines:?}"
     );
+}
+
+/// `p : PVOID := ADR(x)` then `MEMCPY(ADR(y), p, SIZEOF(x))` copies x; a method declared
+/// `: PVOID` (Beckhoff's samples return nothing so) gives 0 (NULL); one W1425 (the pointer reads
+/// an INT as bytes), no error.
+#[test]
+fn pvoid_is_an_untyped_bounded_address() {
+    let (trace, stderr) = common::run_text(
+        "pvoid.st",
+        "FUNCTION_BLOCK FB_Station
+METHOD Execute : PVOID
+Execute := 0;
+END_METHOD
+END_FUNCTION_BLOCK
+
+PROGRAM Main
+VAR
+  x : INT := 1234;
+  y : INT;
+  p : PVOID;
+  st : FB_Station;
+  isNull : BOOL;
+END_VAR
+p := ADR(x);
+MEMCPY(ADR(y), p, SIZEOF(x));
+isNull := st.Execute() = 0;
+END_PROGRAM
+",
+        1,
+        "Main.y,Main.isNull",
+    );
+    assert_eq!(trace.lines().nth(1), Some("0,0,1234,1"), "{trace}");
+    assert_eq!(stderr.matches("warning[W1425]").count(), 1, "{stderr}");
+    assert!(!stderr.contains("error"), "{stderr}");
 }

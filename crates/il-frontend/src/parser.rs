@@ -852,6 +852,15 @@ impl<'s> Ctx<'s> {
         if name.name.eq_ignore_ascii_case("BIT") {
             return TypeRef::Named(Ident::new("BOOL", name.span));
         }
+        if name.name.eq_ignore_ascii_case("PVOID") {
+            // TwinCAT's untyped pointer (Infosys "PVOID", a pointer-sized address): a bounded
+            // `POINTER TO BYTE` here, as `ADR(x)` gives it and MEMCPY takes it
+            return TypeRef::Ref {
+                kind: crate::ast::RefKind::Pointer,
+                target: Box::new(TypeRef::Named(Ident::new("BYTE", name.span))),
+                span: name.span,
+            };
+        }
         TypeRef::Named(name)
     }
 
