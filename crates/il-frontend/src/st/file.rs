@@ -287,6 +287,25 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
         }
         (i + 1).min(n)
     };
+    // `ACTION name [:] ... END_ACTION` from the token `k` (`ACTION`), ending by `limit` at the
+    // latest: the action (its name, the name's range, its text's range) and the token after
+    // its END_ACTION
+    let one_action = |k: usize, limit: usize| {
+        let name_tok = &toks[k + 1];
+        let mut b = k + 2;
+        if toks.get(b).is_some_and(|t| t.tok == Tok::Colon) {
+            b += 1;
+        }
+        let text_start = toks[b - 1].range.end;
+        let e = skip_to(b, "END_ACTION").min(limit);
+        let text_end = toks[e - 1].range.start.max(text_start);
+        let action = (
+            word(src, name_tok).to_string(),
+            name_tok.range.clone(),
+            text_start..text_end,
+        );
+        (action, e)
+    };
     while i < n && !matches!(toks[i].tok, Tok::Eof) {
         let t = &toks[i];
         let w = word(src, t).to_ascii_uppercase();
@@ -304,19 +323,8 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     if is_word(src, &toks[k], "ACTION")
                         && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Ident)
                     {
-                        let name_tok = &toks[k + 1];
-                        let mut b = k + 2;
-                        if toks.get(b).is_some_and(|t| t.tok == Tok::Colon) {
-                            b += 1;
-                        }
-                        let text_start = toks[b - 1].range.end;
-                        let e = skip_to(b, "END_ACTION").min(j);
-                        let text_end = toks[e - 1].range.start.max(text_start);
-                        action_list.push((
-                            word(src, name_tok).to_string(),
-                            name_tok.range.clone(),
-                            text_start..text_end,
-                        ));
+                        let (action, e) = one_action(k, j);
+                        action_list.push(action);
                         k = e;
                     } else {
                         k += 1;
@@ -337,19 +345,8 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     && is_word(src, &toks[k], "ACTION")
                     && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Ident)
                 {
-                    let name_tok = &toks[k + 1];
-                    let mut b = k + 2;
-                    if toks.get(b).is_some_and(|t| t.tok == Tok::Colon) {
-                        b += 1;
-                    }
-                    let text_start = toks[b - 1].range.end;
-                    let e = skip_to(b, "END_ACTION");
-                    let text_end = toks[e - 1].range.start.max(text_start);
-                    action_list.push((
-                        word(src, name_tok).to_string(),
-                        name_tok.range.clone(),
-                        text_start..text_end,
-                    ));
+                    let (action, e) = one_action(k, n);
+                    action_list.push(action);
                     end = toks[e - 1].range.end;
                     k = e;
                     // `END_ACTION;`
