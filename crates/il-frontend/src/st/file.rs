@@ -2266,9 +2266,7 @@ pub fn compile_pending(
                     diags,
                 );
                 p.body = body;
-                if let Some(t) = temps {
-                    p.var_blocks.push(t);
-                }
+                p.var_blocks.extend(temps);
                 // interface variables with an initial value, and variables whose initial value
                 // calls a function: assigned when the POU first runs
                 let own: Vec<&super::interface_vars::Init> =
@@ -2736,6 +2734,10 @@ fn lower_method_as(
         .map(|v| v.name.key())
         .collect();
     let mut body = low.statements(&stmts, diags);
+    // `ADR('text')`: the literal's hidden copy, one global (`var_stat::hoist`) per place
+    if let Some(c) = low.take_literal_copies(m.name.span) {
+        p.var_blocks.push(c);
+    }
     if let Some(t) = low.finish(m.name.span) {
         let mut t: VarBlock = t;
         for v in &mut t.vars {
