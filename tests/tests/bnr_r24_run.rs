@@ -4,9 +4,13 @@
 //!   literal that lives for the whole run, bounded as every pointer (before: E0305, the one error
 //!   of five B&R projects, hiding all their others); a write through it never changes the
 //!   literal's next use.
+//! - a B&R block declared in a `.fun` file and implemented in a `.st` file calls the FB members of
+//!   its variables (`ax.Delay(...)`, `ax` a VAR_IN_OUT of a structure holding a TON) (before:
+//!   E1032 "`ax` is neither a variable nor a library", which also hid the E1003 of a member type
+//!   no file declares).
 
 mod common;
-use common::{column, run_text};
+use common::{column, in_dir, run_text, write_in};
 
 /// `MEMCPY(ADR(buf), ADR('abc'), 5)` copies the literal (its 2-byte length and 3 characters), a
 /// function reads the literal's first character through a `POINTER TO BYTE` and its length through
@@ -91,4 +95,69 @@ END_PROGRAM
     assert_eq!(column(&trace, "Main.greet"), vec![94.0; 3], "{trace}");
     // the pointer the method stored in cycle 0 still reads the literal in the later cycles
     assert_eq!(column(&trace, "Main.k.size"), vec![12.0; 3], "{trace}");
+}
+
+/// The structure type in a `.typ`, the block's declaration in a `.fun` (a VAR_IN_OUT and a VAR of
+/// it), its body in a `.st`: `loc.Delay(...)` and `ax.Delay(...)` run the TON members. The 50 ms
+/// delay is done after its fifth 10 ms cycle, the 20 ms one after two more; `Done` is written
+/// through the VAR_IN_OUT into the program's variable. A member type no file declares is then
+/// named where it is (E1003), not hidden behind an E1032 of the body.
+#[test]
+fn a_split_block_calls_the_fb_members_of_its_variables() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_in(
+        d,
+        "Ax.typ",
+        "TYPE\n  Axis_typ : STRUCT\n    Delay : TON;\n    Done : BOOL;\n  END_STRUCT;\nEND_TYPE\n",
+    );
+    write_in(
+        d,
+        "Ax.fun",
+        "FUNCTION_BLOCK AxFB\n  VAR_IN_OUT\n    ax : Axis_typ;\n  END_VAR\n  VAR\n    loc : Axis_typ;\n  END_VAR\nEND_FUNCTION_BLOCK\n",
+    );
+    write_in(
+        d,
+        "AxFB.st",
+        "FUNCTION_BLOCK AxFB\n  loc.Delay(IN := TRUE, PT := T#50ms);\n  ax.Delay(IN := loc.Delay.Q, PT := T#20ms);\n  ax.Done := ax.Delay.Q;\nEND_FUNCTION_BLOCK\n",
+    );
+    write_in(
+        d,
+        "Main.st",
+        "PROGRAM Main\nVAR\n  a : Axis_typ;\n  f : AxFB;\nEND_VAR\nf(ax := a);\nEND_PROGRAM\n",
+    );
+    let files = ["Ax.typ", "Ax.fun", "AxFB.st", "Main.st"];
+    let mut args = vec!["run"];
+    args.extend(files);
+    args.extend([
+        "--cycles",
+        "10",
+        "--trace",
+        "-",
+        "--watch",
+        "Main.a.Done,Main.a.Delay.ET",
+    ]);
+    let (code, trace, stderr) = in_dir(d, &args);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(!stderr.contains("E1032"), "{stderr}");
+    let done = column(&trace, "Main.a.Done");
+    let first = done.iter().position(|&v| v == 1.0);
+    // loc.Delay.Q from cycle 5 (ET 50 ms), ax.Delay.Q two 10 ms cycles later (cycle 7)
+    assert_eq!(first, Some(7), "{trace}");
+    // a member type of another library: its E1003, at the member, is what is reported
+    write_in(
+        d,
+        "Ax.typ",
+        "TYPE\n  Axis_typ : STRUCT\n    Delay : TON;\n    Done : BOOL;\n    Pid : LCRTempPID;\n  END_STRUCT;\nEND_TYPE\n",
+    );
+    let mut args = vec!["check"];
+    args.extend(files);
+    let (code, _, stderr) = in_dir(d, &args);
+    assert_eq!(code, Some(1), "{stderr}");
+    let errors: Vec<&str> = stderr.lines().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{stderr}");
+    assert!(
+        errors[0].starts_with("Ax.typ:5:11: error[E1003]: unknown type `LCRTempPID`"),
+        "{stderr}"
+    );
 }
