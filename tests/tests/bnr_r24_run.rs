@@ -8,6 +8,9 @@
 //!   its variables (`ax.Delay(...)`, `ax` a VAR_IN_OUT of a structure holding a TON) (before:
 //!   E1032 "`ax` is neither a variable nor a library", which also hid the E1003 of a member type
 //!   no file declares).
+//! - an ST body whose `IF` / `ELSIF` / `WHILE` conditions continue on lines starting with
+//!   `AND (` is ST (before: enough such lines made it "instruction list" (W0303), then a cascade of
+//!   IL errors, 78 per B&R library).
 
 mod common;
 use common::{column, in_dir, run_text, write_in};
@@ -160,4 +163,43 @@ fn a_split_block_calls_the_fb_members_of_its_variables() {
         errors[0].starts_with("Ax.typ:5:11: error[E1003]: unknown type `LCRTempPID`"),
         "{stderr}"
     );
+}
+
+/// B&R code splits long conditions over lines, each continuation starting with `AND (...)`; such
+/// lines outnumber the statements here, and the body is still read (and run) as ST: `state`
+/// follows `ready`, which the program sets from its second cycle.
+#[test]
+fn conditions_continued_on_and_lines_stay_structured_text() {
+    let src = "PROGRAM Main
+VAR
+  ready, running, enabled, fault : BOOL;
+  state, n : INT;
+END_VAR
+n := n + 1;
+ready := n >= 2;
+IF (ready = FALSE)
+  AND (running = FALSE)
+  AND (enabled = FALSE)
+  AND (fault = FALSE)
+THEN
+  state := 1;
+ELSIF (ready = TRUE)
+  AND (running = FALSE)
+  AND (enabled = FALSE)
+  AND (fault = FALSE)
+THEN
+  state := 2;
+END_IF;
+WHILE (n < 0)
+  AND (running = FALSE)
+  AND (enabled = FALSE)
+  AND (fault = FALSE)
+DO
+  n := 0;
+END_WHILE;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("leading_and.st", src, 3, "Main.state");
+    assert!(!stderr.contains("W0303"), "{stderr}");
+    assert_eq!(column(&trace, "Main.state"), vec![1.0, 2.0, 2.0], "{trace}");
 }

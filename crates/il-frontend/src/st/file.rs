@@ -980,6 +980,10 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
     // continues its expression (`q := a` then `OR b` then `OR c;`); IL writes `:=` only inside
     // the parentheses of a call
     let mut open_assignment = false;
+    // likewise a condition after `IF`, `ELSIF`, `WHILE`, `UNTIL` (or a `CASE` selector) not yet
+    // ended by its `THEN`, `DO`, `OF` or `;`: `IF (a = 1)` then `AND (b = 2)` then `THEN` (before:
+    // a few such lines outnumbered the statements and the body was read as IL)
+    let mut open_condition = false;
     for (k, t) in toks.iter().enumerate() {
         let next = toks.get(k + 1);
         let next_same_line = next.filter(|nt| {
@@ -1020,7 +1024,12 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                     let operand = next_same_line.is_none_or(|nt| {
                         !matches!(nt.tok, Tok::Assign | Tok::LBracket | Tok::Dot | Tok::Caret)
                     });
-                    if operand && !line_end_semi && !closes_earlier && !open_assignment {
+                    if operand
+                        && !line_end_semi
+                        && !closes_earlier
+                        && !open_assignment
+                        && !open_condition
+                    {
                         il += 1;
                     }
                 }
@@ -1039,7 +1048,12 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                 st += 1;
                 open_assignment = true;
             }
-            Tok::Semi => open_assignment = false,
+            Tok::Semi => {
+                open_assignment = false;
+                open_condition = false;
+            }
+            Tok::Kw(Kw::If | Kw::Elsif | Kw::While | Kw::Until | Kw::Case) => open_condition = true,
+            Tok::Kw(Kw::Then | Kw::Do | Kw::Of) => open_condition = false,
             // ST-only words wherever they are (one-line POUs: `... END_VAR RETURN; END_FUNCTION`).
             Tok::Kw(Kw::Return | Kw::Exit | Kw::Continue) => st += 1,
             _ => {}
