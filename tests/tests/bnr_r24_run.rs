@@ -11,9 +11,12 @@
 //! - an ST body whose `IF` / `ELSIF` / `WHILE` conditions continue on lines starting with
 //!   `AND (` is ST (before: enough such lines made it "instruction list" (W0303), then a cascade of
 //!   IL errors, 78 per B&R library).
+//! - B&R's preprocessor lines `#define`, `#ifdef`, `#ifndef`, `#else`, `#endif` compile the branch
+//!   whose name is (not) defined (before: E0023 "this file is Siemens SCL", the rest of the file
+//!   not compiled); `#include` / `#if` are one located E1058.
 
 mod common;
-use common::{column, in_dir, run_text, write_in};
+use common::{check_text, column, in_dir, run_text, write_in};
 
 /// `MEMCPY(ADR(buf), ADR('abc'), 5)` copies the literal (its 2-byte length and 3 characters), a
 /// function reads the literal's first character through a `POINTER TO BYTE` and its length through
@@ -202,4 +205,45 @@ END_PROGRAM
     let (trace, stderr) = run_text("leading_and.st", src, 3, "Main.state");
     assert!(!stderr.contains("W0303"), "{stderr}");
     assert_eq!(column(&trace, "Main.state"), vec![1.0, 2.0, 2.0], "{trace}");
+}
+
+/// `#ifdef SIMULATION` with no `#define SIMULATION` takes the `#else` branch (note W1419 says
+/// the name is defined nowhere); `#define FAST` makes `#ifdef FAST` compile, `#ifndef FAST` not.
+/// An `#include` line is one E1058 at the line, not an SCL diagnosis of the whole file.
+#[test]
+fn bnr_preprocessor_lines_choose_their_branch() {
+    let src = "#define FAST
+PROGRAM Main
+VAR
+  mode, speed : INT;
+END_VAR
+#ifdef SIMULATION
+  mode := 1;
+#else
+  mode := 2;
+#endif
+#ifdef FAST
+  speed := 10;
+#endif
+#ifndef FAST
+  speed := 1;
+#endif
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("pre.st", src, 2, "Main.mode,Main.speed");
+    assert!(stderr.contains("W1419"), "{stderr}");
+    assert!(!stderr.contains("E0023"), "{stderr}");
+    assert_eq!(column(&trace, "Main.mode"), vec![2.0, 2.0], "{trace}");
+    assert_eq!(column(&trace, "Main.speed"), vec![10.0, 10.0], "{trace}");
+    let (code, lines) = check_text(
+        "inc.st",
+        "PROGRAM Main\nVAR\n  x : INT;\nEND_VAR\n#include \"config.h\"\nx := 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].starts_with("inc.st:5:1: error[E1058]"),
+        "{lines:?}"
+    );
 }

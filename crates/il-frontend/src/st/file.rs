@@ -1193,6 +1193,19 @@ pub fn parse_text(
         }
         first_try = Some((unit, local));
     }
+    // `#ifdef X` ... `#else` ... `#endif` (B&R's preprocessor): the sections not compiled and the
+    // directive lines blanked (`hash_directives`), before `#word` could read as SCL's `#local`
+    let preprocessed;
+    let src = match (lang == Lang::St)
+        .then(|| super::hash_directives::hash_directives(file, src, diags))
+        .flatten()
+    {
+        Some(t) => {
+            preprocessed = t;
+            preprocessed.as_str()
+        }
+        None => src,
+    };
     let (mut toks, mut problems) = lex(src);
     if lang == Lang::St {
         if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems) {

@@ -21,6 +21,7 @@ mod conflict_markers;
 pub mod fb_init;
 pub mod fb_init_args;
 pub mod file;
+mod hash_directives;
 pub mod implicit_enums;
 pub mod infer;
 pub mod inherit;
