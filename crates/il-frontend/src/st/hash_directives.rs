@@ -141,13 +141,11 @@ pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Opti
                     "open the section with `#ifdef NAME` or delete the line",
                 )),
             },
-            "endif" => {
-                if stack.pop().is_none() {
-                    diags.push(error(
-                        "`#endif` without its `#ifdef`".into(),
-                        "open the section with `#ifdef NAME` or delete the line",
-                    ));
-                }
+            "endif" if stack.pop().is_none() => {
+                diags.push(error(
+                    "`#endif` without its `#ifdef`".into(),
+                    "open the section with `#ifdef NAME` or delete the line",
+                ));
             }
             "include" if on => diags.push(error(
                 "`#include` of the B&R preprocessor is not read".into(),
