@@ -78,6 +78,8 @@ pub fn compile_xml_with_var_config(
                     .into_iter()
                     .map(ast::LibraryElement::Action),
             );
+            // `ADR('text')` in ST bodies: the literals' hidden copies made global variables
+            il_frontend::st::var_stat::hoist(std::slice::from_mut(&mut unit));
             (unit, std::mem::take(&mut ctx.var_config))
         }
         None => {

@@ -56,7 +56,7 @@ pub fn lower(
     pou: &Pou,
     actions: &[(Ident, &Element)],
     il_actions: &[(Ident, Vec<IlStmt>)],
-) -> (Vec<IlStmt>, Option<VarBlock>) {
+) -> (Vec<IlStmt>, Vec<VarBlock>) {
     let mut t = crate::il_body::embedded_text(e);
     join_split_operators(&mut t.text, t.base, ctx.xml);
     // the declaration blocks the body begins with are the POU's (read by `body_declarations`)

@@ -977,6 +977,10 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
     // continues its expression (`q := a` then `OR b` then `OR c;`); IL writes `:=` only inside
     // the parentheses of a call
     let mut open_assignment = false;
+    // likewise a condition after `IF`, `ELSIF`, `WHILE`, `UNTIL` (or a `CASE` selector) not yet
+    // ended by its `THEN`, `DO`, `OF` or `;`: `IF (a = 1)` then `AND (b = 2)` then `THEN` (before:
+    // a few such lines outnumbered the statements and the body was read as IL)
+    let mut open_condition = false;
     for (k, t) in toks.iter().enumerate() {
         let next = toks.get(k + 1);
         let next_same_line = next.filter(|nt| {
@@ -1017,7 +1021,12 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                     let operand = next_same_line.is_none_or(|nt| {
                         !matches!(nt.tok, Tok::Assign | Tok::LBracket | Tok::Dot | Tok::Caret)
                     });
-                    if operand && !line_end_semi && !closes_earlier && !open_assignment {
+                    if operand
+                        && !line_end_semi
+                        && !closes_earlier
+                        && !open_assignment
+                        && !open_condition
+                    {
                         il += 1;
                     }
                 }
@@ -1036,7 +1045,12 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
                 st += 1;
                 open_assignment = true;
             }
-            Tok::Semi => open_assignment = false,
+            Tok::Semi => {
+                open_assignment = false;
+                open_condition = false;
+            }
+            Tok::Kw(Kw::If | Kw::Elsif | Kw::While | Kw::Until | Kw::Case) => open_condition = true,
+            Tok::Kw(Kw::Then | Kw::Do | Kw::Of) => open_condition = false,
             // ST-only words wherever they are (one-line POUs: `... END_VAR RETURN; END_FUNCTION`).
             Tok::Kw(Kw::Return | Kw::Exit | Kw::Continue) => st += 1,
             _ => {}
@@ -1176,6 +1190,19 @@ pub fn parse_text(
         }
         first_try = Some((unit, local));
     }
+    // `#ifdef X` ... `#else` ... `#endif` (B&R's preprocessor): the sections not compiled and the
+    // directive lines blanked (`hash_directives`), before `#word` could read as SCL's `#local`
+    let preprocessed;
+    let src = match (lang == Lang::St)
+        .then(|| super::hash_directives::hash_directives(file, src, diags))
+        .flatten()
+    {
+        Some(t) => {
+            preprocessed = t;
+            preprocessed.as_str()
+        }
+        None => src,
+    };
     let (mut toks, mut problems) = lex(src);
     if lang == Lang::St {
         if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems) {
@@ -2263,9 +2290,7 @@ pub fn compile_pending(
                     diags,
                 );
                 p.body = body;
-                if let Some(t) = temps {
-                    p.var_blocks.push(t);
-                }
+                p.var_blocks.extend(temps);
                 // interface variables with an initial value, and variables whose initial value
                 // calls a function: assigned when the POU first runs
                 let own: Vec<&super::interface_vars::Init> =
@@ -2733,6 +2758,10 @@ fn lower_method_as(
         .map(|v| v.name.key())
         .collect();
     let mut body = low.statements(&stmts, diags);
+    // `ADR('text')`: the literal's hidden copy, one global (`var_stat::hoist`) per place
+    if let Some(c) = low.take_literal_copies(m.name.span) {
+        p.var_blocks.push(c);
+    }
     if let Some(t) = low.finish(m.name.span) {
         let mut t: VarBlock = t;
         for v in &mut t.vars {

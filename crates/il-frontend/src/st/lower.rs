@@ -115,6 +115,10 @@ pub struct PouLowering<'d> {
     pub(super) per_call_refs: std::collections::HashSet<String>,
     /// Set while the value of an assignment to one of [`Self::per_call_refs`] is lowered.
     per_call_target: bool,
+    /// The hidden variables holding the text of a string literal whose address is taken
+    /// (`ADR('text')`, B&R Automation Studio's idiom): one per place in the text, for the whole
+    /// run (see [`Self::take_literal_copies`]).
+    literal_copies: Vec<VarDecl>,
 }
 
 fn instr(kind: InstrKind, span: Span) -> IlStmt {
@@ -251,6 +255,7 @@ impl<'d> PouLowering<'d> {
             result_dropped: false,
             per_call_refs: Default::default(),
             per_call_target: false,
+            literal_copies: Vec::new(),
             reference_to: decls.has_reference_to()
                 || pou.var_blocks.iter().any(|b| {
                     b.vars
@@ -569,6 +574,54 @@ impl<'d> PouLowering<'d> {
             constant: false,
             retain: false,
             vars: self.temps,
+            span,
+        })
+    }
+
+    /// The hidden variables holding the literals whose address the statements take
+    /// (`ADR('text')`): a block named [`super::var_stat::MARK`], so that
+    /// [`super::var_stat::hoist`] makes each a global variable with an address for the whole run
+    /// (a pointer stored from it stays valid, also in a FUNCTION); `None` when there are none.
+    pub fn take_literal_copies(&mut self, span: Span) -> Option<VarBlock> {
+        (!self.literal_copies.is_empty()).then(|| VarBlock {
+            name: Some(Ident::new(super::var_stat::MARK, span)),
+            kind: VarKind::Local,
+            constant: false,
+            retain: false,
+            vars: std::mem::take(&mut self.literal_copies),
+            span,
+        })
+    }
+
+    /// `ADR('text')` / `ADR("text")`: the hidden variable (a STRING / WSTRING of the literal's
+    /// length) holding the literal, given the literal again right before the address is taken,
+    /// so that a write through an address taken before never changes what the literal means here.
+    /// `None` for another literal (a number has no address: E0305 stays).
+    pub(super) fn literal_copy(&mut self, e: &Expr, out: &mut Vec<IlStmt>) -> Option<il::VarRef> {
+        let ExprKind::Literal(l) = &e.kind else {
+            return None;
+        };
+        let LiteralKind::String { wide, value } = &l.kind else {
+            return None;
+        };
+        let span = e.span;
+        let name = Ident::new(format!("__ADRLIT_{}_{}", span.file.0, span.start), span);
+        if !self.vars.contains_key(&name.key()) {
+            let length = (value.chars().count() as u32).max(1);
+            let ty = TypeRef::String {
+                wide: *wide,
+                length: Some(length),
+                span,
+            };
+            self.literal_copies
+                .push(VarDecl::new(name.clone(), ty.clone(), span));
+            self.vars.insert(name.key(), ty);
+        }
+        out.push(ld(Operand::literal(l.clone()), span));
+        out.push(simple(Op::St, false, Some(var_operand(&name)), span));
+        Some(VarRef {
+            base: name,
+            accessors: Default::default(),
             span,
         })
     }
@@ -1799,13 +1852,35 @@ impl<'d> PouLowering<'d> {
                     [Arg {
                         name: None,
                         value:
+                            text @ Expr {
+                                kind:
+                                    ExprKind::Literal(Literal {
+                                        kind: LiteralKind::String { .. },
+                                        ..
+                                    }),
+                                ..
+                            },
+                        ..
+                    }] if name.is("ADR") => {
+                        // `ADR('text')` (B&R Automation Studio, CODESYS): the address of a
+                        // hidden copy of the literal
+                        let of = self.literal_copy(text, out)?;
+                        return Some(Operand::Ref(Box::new(il::RefOperand {
+                            of: Some(of),
+                            span: e.span,
+                            call_scoped: false,
+                        })));
+                    }
+                    [Arg {
+                        name: None,
+                        value:
                             Expr {
                                 kind: ExprKind::Literal(_),
                                 span: lit,
                             },
                         ..
                     }] => {
-                        // `ADR('auto')` (CODESYS): a literal has no address here
+                        // `ADR(16#FF)`: a number has no address
                         diags.push(
                             Diagnostic::error(
                                 code::E0305,

@@ -21,6 +21,7 @@ mod conflict_markers;
 pub mod fb_init;
 pub mod fb_init_args;
 pub mod file;
+mod hash_directives;
 pub mod implicit_enums;
 pub mod infer;
 pub mod inherit;
@@ -50,7 +51,7 @@ pub use lower::PouLowering;
 pub use qualifiers::{offered_names, with_other_files_names};
 pub use types::{Declarations, PouInterface};
 
-use crate::ast::{IlStmt, Pou, VarBlock};
+use crate::ast::{IlStmt, Pou, VarBlock, VarKind};
 use crate::{FileId, Span};
 use diagnostics::Diagnostics;
 
@@ -107,9 +108,9 @@ pub fn compile_body(
     span: Span,
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
-    let (body, temps, _) =
+    let (body, blocks, _) =
         compile_body_with_actions(file, src, base, decls, pou, &[], &[], span, diags);
-    (body, temps)
+    (body, blocks.into_iter().find(|b| b.kind == VarKind::Temp))
 }
 
 /// [`compile_body`] of a POU that has actions with ST bodies (`(name, text, base)`, CODESYS
@@ -129,7 +130,7 @@ pub fn compile_body_with_actions(
     il_actions: &[(crate::ast::Ident, Vec<IlStmt>)],
     span: Span,
     diags: &mut Diagnostics,
-) -> (Vec<IlStmt>, Option<VarBlock>, Vec<crate::ast::Action>) {
+) -> (Vec<IlStmt>, Vec<VarBlock>, Vec<crate::ast::Action>) {
     let mut local = Diagnostics::new();
     let mut stmts = parse_statements_of(file, src, base, pou, &mut local);
     let mut low = PouLowering::new(decls, pou);
@@ -187,7 +188,12 @@ pub fn compile_body_with_actions(
             }
         })
         .collect();
-    (body, low.finish(span), standalone)
+    let copies = low.take_literal_copies(span);
+    (
+        body,
+        low.finish(span).into_iter().chain(copies).collect(),
+        standalone,
+    )
 }
 
 /// Makes each statement `Name;` that names one of the POU's actions (`names`, by key) a call

@@ -128,12 +128,20 @@ pub fn with_other_files_names<R>(
 }
 
 /// The names `unit` declares for the project's other files (upper case): its POUs, types, global
-/// variables, named global lists and configurations.
+/// variables, named global lists and configurations; and each POU's variables as `POU.VAR` (a
+/// B&R block declared in a `.fun` file and implemented in a `.st` file: `ax.Delay(...)` in the
+/// body calls the member of the block's variable `ax`, no library).
 pub fn offered_names(unit: &crate::ast::CompilationUnit) -> impl Iterator<Item = String> + '_ {
     use crate::ast::LibraryElement;
     unit.items.iter().flat_map(|item| -> Vec<String> {
         match item {
-            LibraryElement::Pou(p) => vec![p.name.key()],
+            LibraryElement::Pou(p) => std::iter::once(p.name.key())
+                .chain(p.var_blocks.iter().flat_map(|b| {
+                    b.vars
+                        .iter()
+                        .map(|v| format!("{}.{}", p.name.key(), v.name.key()))
+                }))
+                .collect(),
             LibraryElement::DataTypes(types) => types.iter().map(|t| t.name.key()).collect(),
             LibraryElement::GlobalVars(b) => b
                 .name
@@ -252,8 +260,16 @@ pub(super) fn library_qualifiers(
         .collect();
     let mut reported = std::collections::HashSet::new();
     let mut in_decl = false;
+    // the POU the token is in (`POU.VAR` among the other files' names: a variable its
+    // declaration in another file gives it)
+    let mut pou = String::new();
     for (k, t) in toks.iter().enumerate() {
         let w = word(src, t).to_ascii_uppercase();
+        if matches!(w.as_str(), "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK")
+            && toks.get(k + 1).is_some_and(ident)
+        {
+            pou = word(src, &toks[k + 1]).to_ascii_uppercase();
+        }
         if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
             // a type is named after `:` in VAR blocks and in TYPE declarations (a STRUCT's
             // fields, `TYPE T : Lib.U; END_TYPE`)
@@ -273,7 +289,10 @@ pub(super) fn library_qualifiers(
             || w == "THIS"
             || declared.contains(&w)
             || PROJECT_PROGRAMS.with(|p| p.borrow().contains(&w))
-            || OTHER_FILES_NAMES.with(|o| o.borrow().contains(&w))
+            || OTHER_FILES_NAMES.with(|o| {
+                let o = o.borrow();
+                o.contains(&w) || (!pou.is_empty() && o.contains(&format!("{pou}.{w}")))
+            })
         {
             continue;
         }

@@ -211,6 +211,14 @@ impl PouLowering<'_> {
             }
         }
         if let ExprKind::Call { name, args } = &e.kind {
+            // `ADR('text')`: the literal's hidden copy
+            if let ([a], true) = (&args[..], name.is("ADR")) {
+                if a.name.is_none() {
+                    if let Some(v) = self.literal_copy(&a.value, out) {
+                        return Some((v, false, None));
+                    }
+                }
+            }
             if super::super::refs::is_address_of(name) {
                 if let [Arg {
                     name: None,
