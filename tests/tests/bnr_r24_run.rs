@@ -14,6 +14,9 @@
 //! - B&R's preprocessor lines `#define`, `#ifdef`, `#ifndef`, `#else`, `#endif` compile the branch
 //!   whose name is (not) defined (before: E0023 "this file is Siemens SCL", the rest of the file
 //!   not compiled); `#include` / `#if` are one located E1058.
+//! - a B&R program folder (`IEC.prg`) whose code is not among the inputs (written in B&R's LD):
+//!   its own `.var` / `.typ` declarations are not compiled, one note W0022 (before: read as global,
+//!   two such programs' `Variables.var` were E1002 duplicates).
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -245,5 +248,54 @@ END_PROGRAM
     assert!(
         errors[0].starts_with("inc.st:5:1: error[E1058]"),
         "{lines:?}"
+    );
+}
+
+/// Two program folders whose code is LD (`Main.ld`, not read) declare the same private variable
+/// and type; a third folder's ST program runs with the package's `Global.var`. Before: E1002 for
+/// the second `state` and `Mode`.
+#[test]
+fn a_program_folder_without_its_code_keeps_its_declarations_to_itself() {
+    let dir = tempfile::tempdir().unwrap();
+    let w = |n: &str, t: &str| write_in(dir.path(), n, t);
+    let prg = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<Program SubType=\"IEC\" xmlns=\"http://br-automation.co.at/AS/Program\">\n  <Files>\n    <File Description=\"Init, cyclic, exit code\">Main.ld</File>\n    <File Description=\"Local data types\" Private=\"true\">Types.typ</File>\n    <File Description=\"Local variables\" Private=\"true\">Variables.var</File>\n  </Files>\n</Program>\n";
+    for folder in ["Detect", "Move"] {
+        w(&format!("Logical/Cell/{folder}/IEC.prg"), prg);
+        w(
+            &format!("Logical/Cell/{folder}/Variables.var"),
+            "VAR\n    state : Mode;\nEND_VAR\n",
+        );
+        w(
+            &format!("Logical/Cell/{folder}/Types.typ"),
+            "TYPE\n    Mode : (IDLE, BUSY);\nEND_TYPE\n",
+        );
+    }
+    w("Logical/Global.var", "VAR\n    ticks : INT;\nEND_VAR\n");
+    w(
+        "Logical/Cell/Counter/Main.st",
+        "PROGRAM _CYCLIC\n    ticks := ticks + 1;\nEND_PROGRAM\n",
+    );
+    let mut args = vec!["run", "--lang", "st", "Logical/Global.var"];
+    let files = [
+        "Logical/Cell/Detect/Variables.var",
+        "Logical/Cell/Detect/Types.typ",
+        "Logical/Cell/Move/Variables.var",
+        "Logical/Cell/Move/Types.typ",
+        "Logical/Cell/Counter/Main.st",
+    ];
+    args.extend(files);
+    args.extend(["--cycles", "3", "--watch", "Global.ticks", "--trace", "-"]);
+    let (code, stdout, stderr) = in_dir(dir.path(), &args);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(column(&stdout, "Global.ticks"), vec![1.0, 2.0, 3.0]);
+    // the dropped files' "read as global" notes are withdrawn; Global.var keeps its own
+    assert_eq!(stderr.matches("W0018").count(), 1, "{stderr}");
+    let notes: Vec<&str> = stderr.lines().filter(|l| l.contains("W0022")).collect();
+    assert_eq!(notes.len(), 2, "{stderr}");
+    assert!(
+        notes[0].starts_with(
+            "Logical/Cell/Detect/Variables.var:1:1: note[W0022]: B&R program `Detect`"
+        ),
+        "{stderr}"
     );
 }

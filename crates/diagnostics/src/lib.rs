@@ -98,6 +98,11 @@ impl Diagnostics {
     pub fn iter(&self) -> std::slice::Iter<'_, Diagnostic> {
         self.list.iter()
     }
+    /// Keeps only those for which `keep` is true (a later stage withdrawing a note an earlier one
+    /// made: a file it did not compile after all).
+    pub fn retain(&mut self, keep: impl FnMut(&Diagnostic) -> bool) {
+        self.list.retain(keep);
+    }
     /// How many there are.
     pub fn len(&self) -> usize {
         self.list.len()

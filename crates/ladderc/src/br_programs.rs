@@ -56,6 +56,7 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
         }
     }
     let mut removals = Vec::new();
+    let with_parts: Vec<PathBuf> = folders.keys().cloned().collect();
     for (dir, parts) in folders {
         // one of each part (two `_CYCLIC` in one folder: the checks' E1002)
         if PARTS
@@ -184,6 +185,64 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
     removals.dedup();
     for (u, i) in removals.into_iter().rev() {
         units[u].items.remove(i);
+    }
+    drop_codeless_programs(units, map, &with_parts, &mut dir_of, diags);
+}
+
+/// The `.var` and `.typ` files of a B&R program folder (it holds `IEC.prg`) none of whose program
+/// parts is among the inputs (its code is LD, or not given): the program's own declarations
+/// (`Private` in IEC.prg), which no other POU may name, so they are not compiled; one note W0022
+/// per folder. Before: read as global, two such programs' `Variables.var` were E1002 duplicates.
+fn drop_codeless_programs(
+    units: &mut [CompilationUnit],
+    map: &SourceMap,
+    with_parts: &[PathBuf],
+    dir_of: &mut impl FnMut(diagnostics::FileId) -> PathBuf,
+    diags: &mut Diagnostics,
+) {
+    let ext = |file: diagnostics::FileId, e: &str| {
+        Path::new(&map.get(file).name)
+            .extension()
+            .is_some_and(|x| x.eq_ignore_ascii_case(e))
+    };
+    let mut dropped: BTreeMap<PathBuf, diagnostics::Span> = BTreeMap::new();
+    let mut program_folder: HashMap<PathBuf, bool> = HashMap::new();
+    let mut files = Vec::new();
+    for unit in units.iter_mut() {
+        unit.items.retain(|item| {
+            let (file, span) = match item {
+                LibraryElement::GlobalVars(b) if ext(b.span.file, "var") => (b.span.file, b.span),
+                LibraryElement::DataTypes(types) => match types.first() {
+                    Some(t) if ext(t.name.span.file, "typ") => (t.name.span.file, t.name.span),
+                    _ => return true,
+                },
+                _ => return true,
+            };
+            let dir = dir_of(file);
+            let codeless = !with_parts.contains(&dir)
+                && *program_folder
+                    .entry(dir.clone())
+                    .or_insert_with(|| dir.join("IEC.prg").is_file());
+            if codeless {
+                dropped.entry(dir).or_insert(span);
+                files.push(file);
+            }
+            !codeless
+        });
+    }
+    // their W0018 ("read as global variables") is withdrawn: W0022 says what became of them
+    diags.retain(|d| d.code != code::W0018 || !d.span.is_some_and(|s| files.contains(&s.file)));
+    for (dir, at) in dropped {
+        let folder = dir.file_name().and_then(|n| n.to_str()).unwrap_or("?");
+        diags.push(
+            Diagnostic::new(
+                code::W0022,
+                Severity::Note,
+                format!("B&R program `{folder}`: none of its code is among the inputs, so its own .var and .typ declarations are not compiled"),
+            )
+            .at(at)
+            .with_hint("a program written in LD (or another language ladderc does not read) declares them for itself alone; give its .st files to compile it"),
+        );
     }
 }
 
