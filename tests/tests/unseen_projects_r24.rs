@@ -18,6 +18,8 @@
 //!   the type that holds both (`LINT`), not at a conversion that changes the outcome;
 //! - Tc2_System's `PVOID` (an untyped address) is a bounded `POINTER TO BYTE`: `p := ADR(x)`,
 //!   MEMCPY through it, a method returning one (before: E1003 unknown type);
+//! - an IEC 61131-10 XML file (B&R Automation Studio 6's LD) is one E3002 that names the format
+//!   (before: "root element is <Project>, expected a PLCopen <project>");
 //! - run-time sites of an `ARRAY [*]` element and of an ANY input's `pValue` are named as written
 //!   (`varlen_arrays_run.rs`, `lang_left_r18.rs`).
 
@@ -254,4 +256,24 @@ END_PROGRAM
     assert_eq!(trace.lines().nth(1), Some("0,0,1234,1"), "{trace}");
     assert_eq!(stderr.matches("warning[W1425]").count(), 1, "{stderr}");
     assert!(!stderr.contains("error"), "{stderr}");
+}
+
+/// B&R Automation Studio 6 writes LD in IEC 61131-10's XML (`<Project xmlns="www.iec.ch/public/
+/// TC65SC65BWG7TF10">`): one error naming that format, not a PLCopen one.
+#[test]
+fn an_iec_61131_10_file_is_named_as_such() {
+    let (code, lines) = check_text(
+        "Cyclic.ld",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>
+<?AutomationStudio FileVersion=\"6.0\"?>
+<Project schemaVersion=\"1.0\" xmlns=\"www.iec.ch/public/TC65SC65BWG7TF10\">
+  <FileHeader companyName=\"B&amp;R Industrial Automation GmbH\" productName=\"Automation Studio\" />
+</Project>
+",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        lines,
+        ["Cyclic.ld:3:1: error[E3002]: an IEC 61131-10 XML file (B&R Automation Studio 6 writes its LD and FBD so): ladderc reads PLCopen TC6 XML, not this format (hint: leave the file out (a B&R program's own declarations are then not compiled either, W0022), or give the POU as ST)"]
+    );
 }

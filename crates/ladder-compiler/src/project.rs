@@ -194,6 +194,23 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
         return unit;
     }
     if root.name() != "project" && !single_pou {
+        // IEC 61131-10's XML exchange format (`<Project xmlns="www.iec.ch/public/TC65SC65BWG7TF10">`,
+        // which B&R Automation Studio 6 writes for its LD and FBD): not PLCopen TC6, and not read
+        let iec_61131_10 = root
+            .attr("xmlns")
+            .is_some_and(|n| n.contains("TC65SC65BWG7"));
+        if iec_61131_10 {
+            let at = ctx.tag(root);
+            ctx.diags.push(
+                Diagnostic::error(
+                    code::E3002,
+                    "an IEC 61131-10 XML file (B&R Automation Studio 6 writes its LD and FBD so): ladderc reads PLCopen TC6 XML, not this format",
+                )
+                .at(at)
+                .with_hint("leave the file out (a B&R program's own declarations are then not compiled either, W0022), or give the POU as ST"),
+            );
+            return unit;
+        }
         ctx.error(
             code::E3002,
             ctx.tag(root),
