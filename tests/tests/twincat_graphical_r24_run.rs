@@ -1,0 +1,369 @@
+//! Round 24 of unseen projects (issue #13): TwinCAT graphical bodies that real projects write and
+//! ladderc refused, run end to end through `ladderc run`:
+//! - an LD closed parallel branch (`BoxTreeParallel`, Beckhoff Infosys "Closed line branch"): the
+//!   OR of its branches, each powered by the line before it (evaluated once); in the
+//!   short-circuit mode (a double line) the branches with boxes run only when no branch without
+//!   a box is TRUE (before: E0325 "element `BoxTreeParallel`");
+//! - an LD box with EN whose result feeds another box: with EN FALSE the box does not run and
+//!   passes its type's initial value on (README "EN/ENO"; before: E0325 "the result of a box with
+//!   EN feeds another box or branch");
+
+mod common;
+use common::{column, run_stimulated_files};
+
+// ---- a small writer of TwinCAT network-list archives (the shape TwinCAT 4024 saves) ----
+
+/// A contact or box input: `text` of type `ty`, negated when `negated`.
+fn operand(text: &str, ty: &str, negated: bool) -> String {
+    format!(
+        r#"<o t="BoxTreeOperand"><o n="Operand" t="Operand"><v n="Operand">"{text}"</v><v n="Type">"{ty}"</v><o n="Flags" t="Flags"><v n="Flags">{}</v></o></o></o>"#,
+        u8::from(negated)
+    )
+}
+
+/// The line's power (the rail, or the line before a parallel branch).
+fn terminator() -> String {
+    r#"<o t="BoxTreeTerminator"><n n="Input" /></o>"#.to_string()
+}
+
+/// An output item: `None` flows on to the box's parent, `Some(v)` writes variable `v`.
+fn out_item(o: &Option<&str>) -> String {
+    match o {
+        None => "<n />".to_string(),
+        Some(v) => format!(
+            r#"<o><v n="Operand">"{v}"</v><o n="Flags" t="Flags"><v n="Flags">0</v></o></o>"#
+        ),
+    }
+}
+
+fn names(list: &[&str]) -> String {
+    list.iter().map(|n| format!("<v>{n}</v>")).collect()
+}
+
+/// A box: `kind` its BoxType, `call` its CallType, `inputs` its input trees (EN first when `en`),
+/// `in_names`/`out_names` its parameter names, `outs` its output items (aligned with `out_names`).
+#[allow(clippy::too_many_arguments)]
+fn boxed(
+    kind: &str,
+    call: &str,
+    instance: &str,
+    en: bool,
+    inputs: &[String],
+    in_names: &[&str],
+    outs: &[Option<&str>],
+    out_names: &[&str],
+) -> String {
+    format!(
+        r#"<o t="BoxTreeBox"><v n="BoxType">"{kind}"</v><o n="Instance" t="Operand"><v n="Operand">"{instance}"</v></o><o n="OutputItems" t="OutputItemList"><l2 n="OutputItems" cet="Operand">{}</l2></o><o n="Flags" t="Flags"><v n="Flags">0</v></o><n n="InputFlags" /><l2 n="InputItems">{}</l2><o n="InputParam" t="ParamList"><l2 n="Names" cet="String">{}</l2></o><o n="OutputParam" t="ParamList"><l2 n="Names" cet="String">{}</l2><l2 n="Types" cet="String">{}</l2></o><v n="CallType" t="Operator">{call}</v><v n="EN">{en}</v><v n="ENO">{en}</v><n n="STSnippet" /><v n="ProvidesSTSnippet">false</v></o>"#,
+        outs.iter().map(out_item).collect::<String>(),
+        inputs.concat(),
+        names(in_names),
+        names(out_names),
+        out_names
+            .iter()
+            .map(|n| if *n == "ENO" {
+                "<v>BOOL</v>"
+            } else {
+                "<v></v>"
+            })
+            .collect::<String>(),
+    )
+}
+
+/// An operator box with EN whose ENO flows on and whose result is written to `target`.
+fn en_box(kind: &str, call: &str, inputs: &[String], target: &str) -> String {
+    boxed(
+        kind,
+        call,
+        "",
+        true,
+        inputs,
+        &["EN"],
+        &[None, Some(target)],
+        &["ENO", ""],
+    )
+}
+
+/// A closed parallel branch of `mode` (`Sequential`, `BoxShortCircuit`) after `input` (none: the
+/// line of its parent).
+fn parallel(mode: &str, input: Option<String>, trees: &[String]) -> String {
+    let input = match input {
+        None => r#"<n n="Input" />"#.to_string(),
+        Some(i) => i.replacen("<o t=", "<o n=\"Input\" t=", 1),
+    };
+    format!(
+        r#"<o t="BoxTreeParallel"><l2 n="Trees">{}</l2>{input}<v n="Mode" t="OperationMode">{mode}</v></o>"#,
+        trees.concat()
+    )
+}
+
+/// A network whose line `rvalue` ends in the coils `coils`.
+fn coils(rvalue: &str, coils: &[&str]) -> String {
+    format!(
+        r#"<o t="BoxTreeAssign"><o n="OutputItems" t="OutputItemList"><l2 n="OutputItems" cet="Operand">{}</l2></o>{}</o>"#,
+        coils.iter().map(|c| out_item(&Some(c))).collect::<String>(),
+        rvalue.replacen("<o t=", "<o n=\"RValue\" t=", 1)
+    )
+}
+
+/// A `.TcPOU` of PROGRAM `MAIN` with `decls` and one network per item of `networks`.
+fn pou(decls: &str, networks: &[String]) -> String {
+    let networks: String = networks
+        .iter()
+        .map(|items| {
+            format!(
+                r#"<o><v n="ILActive">false</v><v n="Label">""</v><v n="OutCommented">false</v><l2 n="NetworkItems">{items}</l2></o>"#
+            )
+        })
+        .collect();
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1" ProductVersion="3.1.4024.14">
+  <POU Name="MAIN" Id="{{22222222-0000-0000-0000-000000000001}}" SpecialFunc="None">
+    <Declaration><![CDATA[PROGRAM MAIN
+VAR
+{decls}
+END_VAR
+]]></Declaration>
+    <Implementation>
+      <NWL>
+        <XmlArchive>
+          <Data>
+            <o xml:space="preserve" t="NWLImplementationObject">
+              <l2 n="NetworkList" cet="Network">
+{networks}
+              </l2>
+            </o>
+          </Data>
+        </XmlArchive>
+      </NWL>
+    </Implementation>
+  </POU>
+</TcPlcObject>
+"#
+    )
+}
+
+/// `ladderc run MAIN.TcPOU` (10 ms scans, sanitizers) for `cycles` with `stimulus`: the trace.
+fn run_pou(src: &str, cycles: u32, stimulus: &str, watch: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let f = dir.path().join("MAIN.TcPOU");
+    std::fs::write(&f, src).unwrap();
+    run_stimulated_files(&[&f], &["--cycle-ms", "10"], cycles, stimulus, watch).0
+}
+
+fn ints(trace: &str, name: &str) -> Vec<i64> {
+    column(trace, name).iter().map(|&v| v as i64).collect()
+}
+
+/// `nA := nA + 1` (EN from the line), `nB := nB + 10` (EN from the line and contact `bInc`) and
+/// the contact `bBypass` in a closed branch of the short-circuit mode after contact `bGo`, to coil
+/// `bLamp`. Beckhoff Infosys "Closed line branch": the branch without a box is evaluated first;
+/// while it is TRUE (bGo and bBypass) the boxes are not called; otherwise they run top to bottom
+/// and the value is the OR of their ENOs. (Before: E0325 "element `BoxTreeParallel`".)
+#[test]
+fn a_short_circuit_closed_branch_runs_its_boxes_only_when_no_contact_branch_is_true() {
+    let add = |v: &str, en: String, n: &str| {
+        en_box(
+            "ADD",
+            "Add",
+            &[en, operand(v, "INT", false), operand(n, "INT", false)],
+            v,
+        )
+    };
+    let net = coils(
+        &parallel(
+            "BoxShortCircuit",
+            Some(operand("bGo", "BOOL", false)),
+            &[
+                add("nA", terminator(), "1"),
+                add("nB", operand("bInc", "BOOL", false), "10"),
+                operand("bBypass", "BOOL", false),
+            ],
+        ),
+        &["bLamp"],
+    );
+    let src = pou("bGo, bInc, bBypass, bLamp : BOOL;\nnA, nB : INT;", &[net]);
+    let stimulus = "2,MAIN.bGo,1\n4,MAIN.bInc,1\n6,MAIN.bBypass,1\n8,MAIN.bGo,0\n";
+    let trace = run_pou(&src, 10, stimulus, "MAIN.nA,MAIN.nB,MAIN.bLamp");
+    assert_eq!(
+        ints(&trace, "MAIN.nA"),
+        [0, 0, 1, 2, 3, 4, 4, 4, 4, 4],
+        "{trace}"
+    );
+    assert_eq!(
+        ints(&trace, "MAIN.nB"),
+        [0, 0, 0, 0, 10, 20, 20, 20, 20, 20],
+        "{trace}"
+    );
+    assert_eq!(
+        ints(&trace, "MAIN.bLamp"),
+        [0, 0, 1, 1, 1, 1, 1, 1, 0, 0],
+        "{trace}"
+    );
+}
+
+/// The pattern of an hour meter: network 1 counts `nTicks`; network 2 is a closed branch (single
+/// line: every branch runs) after the comparison `nTicks >= 3`, whose first box resets `nTicks` and
+/// whose second counts `nHours`. The line before the branch is evaluated once (the first box
+/// writes what it reads), so both boxes run in the same scan; a parallel branch as a network of its
+/// own (no coil) runs too. Also the repro's shape: two MOVE boxes with EN side by side on the rail
+/// (`IF bA THEN nOut := 1; END_IF IF bB THEN nOut := 2; END_IF`). (Before: E0325.)
+#[test]
+fn a_closed_branch_evaluates_the_line_before_it_once_and_runs_every_branch() {
+    let ticks = boxed(
+        "ADD",
+        "Add",
+        "",
+        false,
+        &[operand("nTicks", "INT", false), operand("1", "INT", false)],
+        &[],
+        &[Some("nTicks")],
+        &[""],
+    );
+    let ge = boxed(
+        "GE",
+        "Ge",
+        "",
+        false,
+        &[operand("nTicks", "INT", false), operand("3", "INT", false)],
+        &[],
+        &[],
+        &[],
+    );
+    let hour_meter = parallel(
+        "Sequential",
+        Some(ge),
+        &[
+            en_box(
+                "MOVE",
+                "Move",
+                &[terminator(), operand("0", "INT", false)],
+                "nTicks",
+            ),
+            en_box(
+                "ADD",
+                "Add",
+                &[
+                    terminator(),
+                    operand("nHours", "INT", false),
+                    operand("1", "INT", false),
+                ],
+                "nHours",
+            ),
+        ],
+    );
+    let moves = parallel(
+        "BoxShortCircuit",
+        None,
+        &[
+            en_box(
+                "MOVE",
+                "Move",
+                &[operand("bA", "BOOL", false), operand("1", "INT", false)],
+                "nOut",
+            ),
+            en_box(
+                "MOVE",
+                "Move",
+                &[operand("bB", "BOOL", false), operand("2", "INT", false)],
+                "nOut",
+            ),
+        ],
+    );
+    let src = pou(
+        "nTicks, nHours, nOut : INT;\nbA, bB : BOOL;",
+        &[ticks, hour_meter, moves],
+    );
+    let stimulus = "2,MAIN.bA,1\n4,MAIN.bB,1\n6,MAIN.bA,0\n6,MAIN.bB,0\n";
+    let trace = run_pou(&src, 8, stimulus, "MAIN.nTicks,MAIN.nHours,MAIN.nOut");
+    assert_eq!(
+        ints(&trace, "MAIN.nTicks"),
+        [1, 2, 0, 1, 2, 0, 1, 2],
+        "{trace}"
+    );
+    assert_eq!(
+        ints(&trace, "MAIN.nHours"),
+        [0, 0, 1, 1, 1, 2, 2, 2],
+        "{trace}"
+    );
+    assert_eq!(
+        ints(&trace, "MAIN.nOut"),
+        [0, 0, 1, 1, 2, 2, 2, 2],
+        "{trace}"
+    );
+}
+
+/// Two networks whose box with EN feeds another box (valid LD, the repro's shape): `nCount >= 7`
+/// with EN `bEn` into `tDelay.IN` (a TON of 50 ms, `Q` to `bOut`), and `nCount + 100` with EN
+/// `bEn` into `> 105` (to `bBig`). With EN FALSE the box does not run and passes its type's
+/// initial value on (FALSE, 0: README "EN/ENO", as matiec does), so the timer restarts and `bBig`
+/// is FALSE although `nCount + 100 > 105`. (Before: E0325 "the result of a box with EN feeds
+/// another box or branch".)
+#[test]
+fn a_box_with_en_feeds_another_box_its_result_or_its_types_initial_value() {
+    let ge = boxed(
+        "GE",
+        "Ge",
+        "",
+        true,
+        &[
+            operand("bEn", "BOOL", false),
+            operand("nCount", "INT", false),
+            operand("7", "INT", false),
+        ],
+        &["EN"],
+        &[],
+        &[],
+    );
+    let ton = boxed(
+        "TON",
+        "FunctionBlock",
+        "tDelay",
+        false,
+        &[ge, operand("T#50MS", "TIME", false)],
+        &["IN", "PT"],
+        &[None, Some("")],
+        &["Q", "ET"],
+    );
+    let add = boxed(
+        "ADD",
+        "Add",
+        "",
+        true,
+        &[
+            operand("bEn", "BOOL", false),
+            operand("nCount", "INT", false),
+            operand("100", "INT", false),
+        ],
+        &["EN"],
+        &[],
+        &[],
+    );
+    let gt = boxed(
+        "GT",
+        "Gt",
+        "",
+        false,
+        &[add, operand("105", "INT", false)],
+        &[],
+        &[],
+        &[],
+    );
+    let src = pou(
+        "bEn, bOut, bBig : BOOL;\nnCount : INT := 9;\ntDelay : TON;",
+        &[coils(&ton, &["bOut"]), coils(&gt, &["bBig"])],
+    );
+    let stimulus = "2,MAIN.bEn,1\n10,MAIN.bEn,0\n";
+    let trace = run_pou(&src, 12, stimulus, "MAIN.bOut,MAIN.bBig");
+    assert_eq!(
+        ints(&trace, "MAIN.bOut"),
+        [0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 0, 0],
+        "{trace}"
+    );
+    assert_eq!(
+        ints(&trace, "MAIN.bBig"),
+        [0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0],
+        "{trace}"
+    );
+}
