@@ -367,3 +367,178 @@ fn a_box_with_en_feeds_another_box_its_result_or_its_types_initial_value() {
         "{trace}"
     );
 }
+
+// ---- CFC charts ----
+
+fn cfc_pin(id: u32) -> String {
+    format!(r#"<o><v n="Negated">false</v><v n="Id">{id}L</v></o>"#)
+}
+
+fn cfc_text(text: &str) -> String {
+    format!(r#"<o n="Text" t="CFCText"><v n="Text">"{text}"</v></o>"#)
+}
+
+/// An input element reading `text`, its output pin `pin`, at `x, y`.
+fn cfc_input(text: &str, pin: u32, x: u32, y: u32) -> String {
+    format!(
+        r#"<o t="CFCInputElement"><o n="Output" t="CFCOutputPin"><v n="Negated">false</v><v n="Id">{pin}L</v></o>{}<v n="Bounds">"{x}, {y}, 0, 0"</v></o>"#,
+        cfc_text(text)
+    )
+}
+
+/// An output element writing `text`, its input pin `pin`, at `x, y`.
+fn cfc_output(text: &str, pin: u32, x: u32, y: u32) -> String {
+    format!(
+        r#"<o t="CFCOutputElement"><o n="Input" t="CFCInputPinWithSetReset"><v n="Negated">false</v><v n="SetReset" t="SetReset">None</v><v n="Id">{pin}L</v></o>{}<v n="Bounds">"{x}, {y}, 0, 0"</v></o>"#,
+        cfc_text(text)
+    )
+}
+
+fn cfc_wire(from: u32, to: u32) -> String {
+    format!(r#"<o t="CFCConnection"><v n="SourcePinId">{from}L</v><v n="DestPinId">{to}L</v></o>"#)
+}
+
+/// A comment as TwinCAT 4024 saves it.
+fn cfc_comment(text: &str, x: u32, y: u32) -> String {
+    format!(
+        r#"<o t="CFCCommentElement">{}<v n="PageArea">0</v><v n="Bounds">"{x}, {y}, 0, 0"</v><n n="ElementGroupId" /></o>"#,
+        cfc_text(text)
+    )
+}
+
+/// A box of `kind` (`Method`, `FunctionBlock` ...): its input pins named `inputs` (name, pin id),
+/// no outputs, `type_name` and `instance`, at `x, y`.
+fn cfc_box(
+    kind: &str,
+    type_name: &str,
+    instance: &str,
+    inputs: &[(&str, u32)],
+    x: u32,
+    y: u32,
+) -> String {
+    let pins: String = inputs.iter().map(|(_, id)| cfc_pin(*id)).collect();
+    let texts: String = inputs
+        .iter()
+        .map(|(n, _)| *n)
+        .chain([type_name, instance])
+        .map(|t| format!(r#"<o><v n="Text">"{t}"</v></o>"#))
+        .collect();
+    format!(
+        r#"<o t="CFCBoxElement"><o n="Inputs" t="CFCItemList"><l2 n="InnerList" cet="CFCInputPin">{pins}</l2></o><o n="Outputs" t="CFCItemList"><l2 n="InnerList" /></o><o n="Texts" t="CFCItemList"><l2 n="InnerList" cet="CFCText">{texts}</l2></o><v n="Bounds">"{x}, {y}, 0, 0"</v><v n="EnEno">false</v><v n="KindOfCall" t="KindOfCall">{kind}</v></o>"#
+    )
+}
+
+/// A `.TcPOU` of PROGRAM `MAIN` with `decls` and a CFC chart of `elements`.
+fn cfc_pou(decls: &str, elements: &[String]) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1" ProductVersion="3.1.4024.12">
+  <POU Name="MAIN" Id="{{55555555-0000-0000-0000-000000000001}}" SpecialFunc="None">
+    <Declaration><![CDATA[PROGRAM MAIN
+VAR
+{decls}
+END_VAR
+]]></Declaration>
+    <Implementation>
+      <CFC>
+        <XmlArchive>
+          <Data>
+            <o xml:space="preserve" t="CFCImplementationObject">
+              <o n="Items" t="CFCItemList">
+                <l2 n="InnerList">
+{}
+                </l2>
+              </o>
+              <v n="UseExplicitExecutionOrder">false</v>
+            </o>
+          </Data>
+        </XmlArchive>
+      </CFC>
+    </Implementation>
+  </POU>
+</TcPlcObject>
+"#,
+        elements.concat()
+    )
+}
+
+/// The function block of the method boxes: `Add(nStep)` adds to `n`, `Clear` clears it.
+const FB_COUNTER: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1" ProductVersion="3.1.4024.12">
+  <POU Name="FB_Counter" Id="{66666666-0000-0000-0000-000000000001}" SpecialFunc="None">
+    <Declaration><![CDATA[FUNCTION_BLOCK FB_Counter
+VAR_OUTPUT
+  n : INT;
+END_VAR]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[]]></ST>
+    </Implementation>
+    <Method Name="Add" Id="{66666666-0000-0000-0000-000000000002}">
+      <Declaration><![CDATA[METHOD Add
+VAR_INPUT
+  nStep : INT;
+END_VAR
+]]></Declaration>
+      <Implementation>
+        <ST><![CDATA[n := n + nStep;]]></ST>
+      </Implementation>
+    </Method>
+  </POU>
+</TcPlcObject>
+"#;
+
+/// A CFC chart with comments (TwinCAT 4024's `CFCCommentElement`, one above each network): they
+/// are skipped, and the chart runs (`bLamp` follows `bStart`). Beckhoff Infosys, CFC element
+/// "Comment": a comment has no semantics. (Before: E0325 "element `CFCCommentElement`".)
+#[test]
+fn a_cfc_comment_is_skipped() {
+    let src = cfc_pou(
+        "bStart, bLamp : BOOL;",
+        &[
+            cfc_comment("copy the start button to the lamp", 2, 0),
+            cfc_input("bStart", 20, 5, 2),
+            cfc_output("bLamp", 30, 20, 2),
+            cfc_wire(20, 30),
+            cfc_comment("(nothing else)", 2, 8),
+        ],
+    );
+    let trace = run_pou(&src, 6, "2,MAIN.bStart,1\n4,MAIN.bStart,0\n", "MAIN.bLamp");
+    assert_eq!(ints(&trace, "MAIN.bLamp"), [0, 0, 1, 1, 0, 0], "{trace}");
+}
+
+/// A CFC box calling a method of an instance (`KindOfCall` `Method`, type `FB_Counter.Add`,
+/// instance `counter`), its input wired from `nInc`: the call `counter.Add(nStep := nInc)`, once a
+/// scan. (Before: E0325 "box `FB_Counter.Add` of call kind `Method`".)
+#[test]
+fn a_cfc_method_box_calls_the_method_of_its_instance() {
+    let main = cfc_pou(
+        "counter : FB_Counter;\nnInc : INT := 2;",
+        &[
+            cfc_input("nInc", 20, 2, 2),
+            cfc_box(
+                "Method",
+                "FB_Counter.Add",
+                "counter",
+                &[("nStep", 30)],
+                10,
+                2,
+            ),
+            cfc_wire(20, 30),
+        ],
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let (fb, m) = (
+        dir.path().join("FB_Counter.TcPOU"),
+        dir.path().join("MAIN.TcPOU"),
+    );
+    std::fs::write(&fb, FB_COUNTER).unwrap();
+    std::fs::write(&m, main).unwrap();
+    let (trace, _) = run_stimulated_files(
+        &[&fb, &m],
+        &["--cycle-ms", "10"],
+        5,
+        "3,MAIN.nInc,5\n",
+        "MAIN.counter.n",
+    );
+    assert_eq!(ints(&trace, "MAIN.counter.n"), [2, 4, 6, 11, 16], "{trace}");
+}
