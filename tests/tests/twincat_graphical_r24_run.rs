@@ -7,6 +7,12 @@
 //! - an LD box with EN whose result feeds another box: with EN FALSE the box does not run and
 //!   passes its type's initial value on (README "EN/ENO"; before: E0325 "the result of a box with
 //!   EN feeds another box or branch");
+//! - a CFC comment (TwinCAT 4024's `CFCCommentElement`) is skipped (before: E0325);
+//! - a CFC box calling a method of an instance (`KindOfCall` `Method`) is the call
+//!   `inst.Method(...)` (before: E0325 "of call kind `Method`");
+//! - a POU whose body is SFC (one E0321, a known limitation) keeps its methods' and properties'
+//!   declarations (before: lost with the body, so a caller passing an `ARRAY [*]` in-out on to a
+//!   method was a false E1072).
 
 mod common;
 use common::{column, run_stimulated_files};
@@ -541,4 +547,121 @@ fn a_cfc_method_box_calls_the_method_of_its_instance() {
         "MAIN.counter.n",
     );
     assert_eq!(ints(&trace, "MAIN.counter.n"), [2, 4, 6, 11, 16], "{trace}");
+}
+
+// ---- a POU whose body is SFC ----
+
+/// A function block whose body is SFC (which ladderc refuses, E0321), with a method taking an
+/// `ARRAY [*]` in-out, a property and an action in SFC.
+const FB_SEQ: &str = r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1" ProductVersion="3.1.4024.12">
+  <POU Name="FB_Seq" Id="{11111111-0000-0000-0000-000000000001}" SpecialFunc="None">
+    <Declaration><![CDATA[FUNCTION_BLOCK FB_Seq
+VAR
+  n : INT;
+END_VAR]]></Declaration>
+    <Implementation>
+      <SFC>
+        <XmlArchive>
+          <Data>
+            <o xml:space="preserve" t="SFCImplementationObject" />
+          </Data>
+        </XmlArchive>
+      </SFC>
+    </Implementation>
+    <Action Name="Step1_active" Id="{11111111-0000-0000-0000-000000000006}">
+      <Implementation>
+        <ST><![CDATA[n := Init.t;]]></ST>
+      </Implementation>
+    </Action>
+    <Method Name="Diag" Id="{11111111-0000-0000-0000-000000000002}">
+      <Declaration><![CDATA[METHOD Diag : BOOL
+VAR_IN_OUT
+  a : ARRAY [*] OF INT;
+END_VAR
+VAR_INPUT
+  k : INT;
+END_VAR]]></Declaration>
+      <Implementation>
+        <ST><![CDATA[a[LOWER_BOUND(a, 1)] := k;
+Diag := TRUE;]]></ST>
+      </Implementation>
+    </Method>
+    <Property Name="Count" Id="{11111111-0000-0000-0000-000000000003}">
+      <Declaration><![CDATA[PROPERTY Count : INT]]></Declaration>
+      <Get Name="Get" Id="{11111111-0000-0000-0000-000000000004}">
+        <Declaration><![CDATA[VAR
+END_VAR
+]]></Declaration>
+        <Implementation>
+          <ST><![CDATA[Count := n;]]></ST>
+        </Implementation>
+      </Get>
+    </Property>
+  </POU>
+</TcPlcObject>
+"#;
+
+/// A caller of FB_Seq: passes its own `ARRAY [*]` in-out on to the method (which IEC 61131-3
+/// edition 3 allows), reads the property; `call` is the method call.
+fn fb_outer(call: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1" ProductVersion="3.1.4024.12">
+  <POU Name="FB_Outer" Id="{{11111111-0000-0000-0000-000000000004}}" SpecialFunc="None">
+    <Declaration><![CDATA[FUNCTION_BLOCK FB_Outer
+VAR
+  seq : FB_Seq;
+  c : INT;
+END_VAR]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[c := seq.Count;]]></ST>
+    </Implementation>
+    <Method Name="Diag" Id="{{11111111-0000-0000-0000-000000000005}}">
+      <Declaration><![CDATA[METHOD Diag
+VAR_IN_OUT
+  a : ARRAY [*] OF INT;
+END_VAR]]></Declaration>
+      <Implementation>
+        <ST><![CDATA[{call}]]></ST>
+      </Implementation>
+    </Method>
+  </POU>
+</TcPlcObject>
+"#
+    )
+}
+
+/// `ladderc check FB_Seq.TcPOU FB_Outer.TcPOU` with `call` in FB_Outer.Diag: exit code and the
+/// error lines up to their hints.
+fn check_seq(call: &str) -> (Option<i32>, Vec<String>) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("FB_Seq.TcPOU"), FB_SEQ).unwrap();
+    std::fs::write(dir.path().join("FB_Outer.TcPOU"), fb_outer(call)).unwrap();
+    let (code, _, stderr) =
+        common::in_dir(dir.path(), &["check", "FB_Seq.TcPOU", "FB_Outer.TcPOU"]);
+    let errors = stderr
+        .lines()
+        .filter(|l| l.contains("error["))
+        .map(|l| l.split(" (hint").next().unwrap_or(l).to_string())
+        .collect();
+    (code, errors)
+}
+
+/// A POU whose body is SFC stays one E0321, and its methods' and properties' declarations are
+/// kept: a caller passing an `ARRAY [*]` in-out on to the method and reading the property checks
+/// clean (before: a false E1072 at `seq.Diag(a := a, k := 7)`, the method's signature lost with
+/// the body); its actions (which may use the SFC's steps, `Init.t`) are left out. (This one
+/// cannot run: E0321 is an error, and the checks after loading do not run past it.)
+#[test]
+fn a_pou_whose_body_is_sfc_keeps_its_methods_and_properties_declarations() {
+    let (code, errors) = check_seq("seq.Diag(a := a, k := 7);");
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        errors,
+        [
+            "FB_Seq.TcPOU:9:7: error[E0321]: TwinCAT object file: the body of `FB_Seq` is in SFC, \
+          which ladderc cannot read in a TwinCAT source file (it reads ST, LD/FBD and CFC bodies)"
+        ]
+    );
 }
