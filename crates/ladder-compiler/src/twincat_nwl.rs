@@ -11,7 +11,10 @@
 //! that output; an `EXECUTE` box holds ST statements in its `STSnippet`, which run when its EN is
 //! TRUE), `BoxTreeOperand` (a contact or input: variable or literal), `BoxTreeDemux` (a
 //! branch of the power rail or a fork of a line: its `Input` evaluated once, named by `VarId`, and
-//! each later `BoxTreeDemux` of that `VarId` reads it), `BoxTreeTerminator` (the left power rail: TRUE).
+//! each later `BoxTreeDemux` of that `VarId` reads it), `BoxTreeTerminator` (the left power rail:
+//! TRUE; inside a closed parallel branch the line before it), `BoxTreeParallel` (a closed parallel
+//! branch: its `Input`, the line before it, and its `Trees`, the branches, each powered by that
+//! line; `Mode` `Sequential` or `BoxShortCircuit`).
 //! An operand's `Flags` are the bits of CODESYS's `IFlags` (Negation 1, Set 2, Jump 4, Return 8,
 //! Rtrig 16, Ftrig 32): on a contact or box input, 1 negated (`/`), 16 rising edge (`P`), 32 falling
 //! edge (`N`); on an output, 0 a coil, 1 a negated coil, 2 a set coil (S), 3 a reset coil (R: a
@@ -26,7 +29,11 @@
 //! declares in a VAR block before the body. Semantics (IEC 61131-3 edition 3, 8.2 and 8.3): the
 //! networks run in order, each item's boxes in data-flow order (inputs first, as the tree nests
 //! them); a box with `EN` runs only when EN is TRUE, its ENO is EN (standard functions raise no
-//! error here), and a value taken from its result is written only when EN is TRUE; a set coil
+//! error here), a value taken from its result is written only when EN is TRUE, and an element that
+//! reads its result reads the initial value of its type when EN is FALSE (README "EN/ENO"); a
+//! closed parallel branch is the OR of its branches, the line before it evaluated once (Beckhoff
+//! Infosys "Closed line branch": in the short-circuit mode the branches with boxes run only when
+//! no branch without one is TRUE); a set coil
 //! writes TRUE and a reset coil FALSE when powered; a jump skips the items up to the network of its
 //! label (forward only, as IEC 61131-3 8.2.7 draws it; a jump backwards is E0325).
 //! Invariants: never panics; an element, call type or flag that is not understood is one E0325
