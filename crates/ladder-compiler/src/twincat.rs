@@ -36,7 +36,9 @@ pub enum TcObject {
         /// that list, so `GVL_Main.x` reaches a member.
         list: Option<String>,
         /// Notes on what was read otherwise than TwinCAT runs it (W0322: `AT %I*` variables read as
-        /// plain variables).
+        /// plain variables), and the E0321 of a POU whose own body (SFC, IL) cannot be read: its
+        /// declaration, its methods' and its properties' declarations are in `text` (callers are
+        /// checked against them), its actions and the bodies are not.
         notes: Vec<Diagnostic>,
     },
     /// A task (`.TcTTO`).
@@ -72,6 +74,8 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
     }
     let root = root?;
     let mut out = Source::blank(text);
+    // the E0321 of a POU whose own body is refused (its declarations are kept)
+    let mut refused: Vec<Diagnostic> = Vec::new();
     let mut list = None;
     // the declaration texts (byte ranges): bounds there may name a list's constant qualified
     let declarations: Vec<(usize, usize)> = root
@@ -82,7 +86,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
     for obj in root.children {
         match obj.name() {
             "POU" => {
-                if let Err(d) = pou(file, &mut out, obj) {
+                if let Err(d) = pou(file, &mut out, obj, &mut refused) {
                     return Some(Err(d));
                 }
             }
@@ -182,6 +186,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
             )
         })
         .into_iter()
+        .chain(refused)
         .collect();
     Some(Ok(TcObject::Source { text, list, notes }))
 }
@@ -417,7 +422,17 @@ fn after_nested_comment(text: &str) -> &str {
 
 /// Copies a `<POU>`: its declaration and body, its methods (and properties, which the ST front end
 /// reports) before the POU's end keyword, its actions in an `ACTIONS` block after it.
-fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnostic>> {
+/// A POU's texts into `out`. A body of its own that cannot be read (SFC, IL) is its E0321 pushed on
+/// `refused`: the POU, its methods and properties are written with their declarations alone (so
+/// callers are checked against their signatures, not against nothing: one error for one cause),
+/// its actions (which may use the SFC's steps) not at all. An action or method whose body cannot
+/// be read is written without it, its E0321 pushed on `refused`.
+fn pou(
+    file: FileId,
+    out: &mut Source,
+    el: &Element,
+    refused: &mut Vec<Diagnostic>,
+) -> Result<(), Box<Diagnostic>> {
     let name = el.attr("Name").unwrap_or("?").to_string();
     let Some(decl) = el.child("Declaration") else {
         return Err(unreadable(
@@ -445,13 +460,23 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
         }
     };
     let mut at = out.copy(decl);
-    if let Some(body) = body_of(file, el, &name, true)? {
-        at = write_body(file, out, at, &body, true)?;
-    }
+    let declarations_only = match body_of(file, el, &name, true) {
+        Ok(Some(body)) => {
+            at = write_body(file, out, at, &body, true)?;
+            false
+        }
+        Ok(None) => false,
+        Err(d) if d.code == code::E0321 => {
+            refused.push(*d);
+            true
+        }
+        Err(d) => return Err(d),
+    };
     let members: Vec<&Element> = el
         .children
         .iter()
         .filter(|c| matches!(c.name(), "Method" | "Action" | "Property"))
+        .filter(|c| !(declarations_only && c.name() == "Action"))
         .collect();
     // an action that comes before a method of a function block or a program is written as a
     // method without parameters (the POU's end must follow its last method); else actions follow
@@ -475,7 +500,15 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
         let next = members.get(k + 1).map_or(el.end(), |n| n.tag_start());
         match m.name() {
             "Action" => {
-                let body = body_of(file, m, &what, false)?;
+                // an action in SFC is written without its body (a call of it stays one), its
+                // E0321 kept
+                let body = match body_of(file, m, &what, false) {
+                    Err(d) if d.code == code::E0321 => {
+                        refused.push(*d);
+                        None
+                    }
+                    b => b?,
+                };
                 // the keywords go into the markup before the body's text
                 let limit = body.as_ref().map_or(next, Body::tag_end);
                 if k >= last_method || !has_methods {
@@ -508,8 +541,13 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                 if let Some(d) = m.child("Declaration") {
                     at = out.copy(d);
                 }
-                if let Some(body) = body_of(file, m, &what, true)? {
-                    at = write_body(file, out, at, &body, true)?;
+                if !declarations_only {
+                    match body_of(file, m, &what, true) {
+                        Ok(Some(body)) => at = write_body(file, out, at, &body, true)?,
+                        Ok(None) => {}
+                        Err(d) if d.code == code::E0321 => refused.push(*d),
+                        Err(d) => return Err(d),
+                    }
                 }
                 at = out.place(at, next, "END_METHOD").ok_or_else(no_room)?;
             }
@@ -529,7 +567,11 @@ fn pou(file: FileId, out: &mut Source, el: &Element) -> Result<(), Box<Diagnosti
                     let acc_next = accessors.get(j + 1).map_or(next, |n| n.tag_start());
                     let what = format!("{what}.{}", acc.name());
                     let decl = acc.child("Declaration");
-                    let body = body_of(file, acc, &what, true)?;
+                    let body = if declarations_only {
+                        None
+                    } else {
+                        body_of(file, acc, &what, true)?
+                    };
                     let limit = decl
                         .map(|d| d.tag_end())
                         .or(body.as_ref().map(Body::tag_end))
@@ -771,12 +813,18 @@ VAR n : INT; END_VAR
         };
         assert_eq!(d.code, code::E0325);
         assert!(d.message.contains("no network list"), "{}", d.message);
+        // an SFC body: its E0321, the declaration kept
         let sfc = ld.replace("NWL", "SFC");
-        let Some(Err(d)) = object_source(FileId(0), &sfc) else {
-            panic!("an error");
+        let Some(Ok(TcObject::Source { text, notes, .. })) = object_source(FileId(0), &sfc) else {
+            panic!("the declaration and the error");
         };
-        assert_eq!(d.code, code::E0321);
-        assert!(d.message.contains("in SFC"), "{}", d.message);
+        assert_eq!(notes.len(), 1);
+        assert_eq!(notes[0].code, code::E0321);
+        assert!(notes[0].message.contains("in SFC"), "{}", notes[0].message);
+        assert!(
+            text.contains("PROGRAM P") && text.contains("END_PROGRAM"),
+            "{text}"
+        );
         assert!(object_source(FileId(0), "<project/>").is_none());
         assert_eq!(first_keyword("(* c *) // x\n {a 'b'} program P"), "PROGRAM");
         // nested comments (TwinCAT, edition 3) and C-style ones

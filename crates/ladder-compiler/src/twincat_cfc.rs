@@ -7,7 +7,8 @@
 //! the instance), its `KindOfCall`, `EnEno` and `Bounds` "x, y"), `CFCInputElement` (an operand
 //! read: its `Output` pin and `Text`), `CFCOutputElement` (a variable written: its `Input` pin, with
 //! `SetReset` None, Set or Reset, and `Text`), `CFCConnection` (`SourcePinId` -> `DestPinId`) and
-//! `CFCComment`.
+//! `CFCComment` (`CFCCommentElement` in TwinCAT 4024). A method box (`KindOfCall` `Method`, type
+//! `FB.Method`, instance the FB instance) is the call `inst.Method(...)`.
 //!
 //! Input: the `<CFC>` element and the body's name. Output: [`NwlBody`], the ST tokens of the chart,
 //! each with the byte offset of the element it comes from (the caller writes them into the chart's
@@ -117,7 +118,8 @@ pub(crate) fn lower(file: FileId, cfc: &Element, what: &str) -> Res<NwlBody> {
                 };
                 wires.insert(d, s);
             }
-            "CFCComment" => {}
+            // a comment has no semantics (TwinCAT 4024 writes `CFCCommentElement`)
+            "CFCComment" | "CFCCommentElement" => {}
             "CFCInputElement" => {
                 let output = prop(el, "Output").and_then(pin).ok_or_else(|| {
                     err(code::E0325, el, "an input element without its pin".into())
@@ -387,11 +389,15 @@ impl Chart<'_, '_, '_, '_> {
                 inputs,
                 ..
             } => match call.as_str() {
-                "FunctionBlock" | "Program" => {
-                    let callee = if call == "Program" {
-                        type_name.clone()
-                    } else {
-                        instance.clone()
+                "FunctionBlock" | "Program" | "Method" => {
+                    let callee = match call.as_str() {
+                        "Program" => type_name.clone(),
+                        // a method box: its type `FB.Method`, its instance the FB instance
+                        "Method" => format!(
+                            "{instance}.{}",
+                            type_name.rsplit('.').next().unwrap_or_default()
+                        ),
+                        _ => instance.clone(),
                     };
                     if check_name(&callee).is_err() {
                         return Err((self.err)(
@@ -489,6 +495,17 @@ impl Chart<'_, '_, '_, '_> {
                         };
                         let name = out_names.get(j).cloned().unwrap_or_default();
                         vec![tok(&format!("{owner}.{name}"), at)]
+                    }
+                    "Method" => {
+                        let name = out_names.get(j).cloned().unwrap_or_default();
+                        return Err((self.err)(
+                            code::E0325,
+                            node.el,
+                            format!(
+                                "output `{name}` of method box `{type_name}` is read: ladderc \
+                                 reads method boxes whose outputs are not connected"
+                            ),
+                        ));
                     }
                     _ => {
                         let mut args = Vec::new();

@@ -11,7 +11,10 @@
 //! that output; an `EXECUTE` box holds ST statements in its `STSnippet`, which run when its EN is
 //! TRUE), `BoxTreeOperand` (a contact or input: variable or literal), `BoxTreeDemux` (a
 //! branch of the power rail or a fork of a line: its `Input` evaluated once, named by `VarId`, and
-//! each later `BoxTreeDemux` of that `VarId` reads it), `BoxTreeTerminator` (the left power rail: TRUE).
+//! each later `BoxTreeDemux` of that `VarId` reads it), `BoxTreeTerminator` (the left power rail:
+//! TRUE; inside a closed parallel branch the line before it), `BoxTreeParallel` (a closed parallel
+//! branch: its `Input`, the line before it, and its `Trees`, the branches, each powered by that
+//! line; `Mode` `Sequential` or `BoxShortCircuit`).
 //! An operand's `Flags` are the bits of CODESYS's `IFlags` (Negation 1, Set 2, Jump 4, Return 8,
 //! Rtrig 16, Ftrig 32): on a contact or box input, 1 negated (`/`), 16 rising edge (`P`), 32 falling
 //! edge (`N`); on an output, 0 a coil, 1 a negated coil, 2 a set coil (S), 3 a reset coil (R: a
@@ -26,7 +29,11 @@
 //! declares in a VAR block before the body. Semantics (IEC 61131-3 edition 3, 8.2 and 8.3): the
 //! networks run in order, each item's boxes in data-flow order (inputs first, as the tree nests
 //! them); a box with `EN` runs only when EN is TRUE, its ENO is EN (standard functions raise no
-//! error here), and a value taken from its result is written only when EN is TRUE; a set coil
+//! error here), a value taken from its result is written only when EN is TRUE, and an element that
+//! reads its result reads the initial value of its type when EN is FALSE (README "EN/ENO"); a
+//! closed parallel branch is the OR of its branches, the line before it evaluated once (Beckhoff
+//! Infosys "Closed line branch": in the short-circuit mode the branches with boxes run only when
+//! no branch without one is TRUE); a set coil
 //! writes TRUE and a reset coil FALSE when powered; a jump skips the items up to the network of its
 //! label (forward only, as IEC 61131-3 8.2.7 draws it; a jump backwards is E0325).
 //! Invariants: never panics; an element, call type or flag that is not understood is one E0325
@@ -87,6 +94,7 @@ pub(crate) fn lower(file: FileId, nwl: &Element, what: &str, declares: bool) -> 
         jumps: false,
         declares,
         written: HashSet::new(),
+        line: None,
     };
     let networks: Vec<&Element> = nwl
         .child("XmlArchive")
@@ -149,6 +157,18 @@ struct Lowering {
     /// The names (upper case, up to the first `.` or `[`) that the network being read writes or
     /// calls.
     written: HashSet<String>,
+    /// Inside a branch of a closed parallel branch (`BoxTreeParallel`): the line that powers it.
+    line: Option<Line>,
+}
+
+/// The line that powers a branch of a closed parallel branch: the value of the element before the
+/// branch (one token), which the branch's terminators stand for and its leftmost contact is in
+/// series with.
+#[derive(Debug, Clone)]
+struct Line {
+    expr: Vec<Tok>,
+    /// The offset of the branch's leftmost operand (the contact the line enters), if it has one.
+    left: Option<usize>,
 }
 
 impl Lowering {
@@ -211,6 +231,9 @@ impl Lowering {
                 "BoxTreeDemux" => {
                     self.value(item, cet)?;
                 }
+                "BoxTreeParallel" => {
+                    self.parallel(item, false)?;
+                }
                 other => return Err(self.unsupported(item, other)),
             }
             if self.jumps {
@@ -225,16 +248,40 @@ impl Lowering {
         match kind(node, cet) {
             "BoxTreeOperand" => {
                 let op = prop(node, "Operand").ok_or_else(|| self.unsupported(node, "operand"))?;
-                self.operand(op)
+                let v = self.operand(op)?;
+                // the leftmost contact of a parallel branch is in series with the line before it
+                match &self.line {
+                    Some(Line {
+                        expr,
+                        left: Some(left),
+                    }) if *left == node.tag_start() => {
+                        let at = v.expr.first().map_or(node.tag_start(), |t| t.at);
+                        let mut e = vec![tok("(", at)];
+                        e.extend(expr.iter().cloned());
+                        e.extend([tok(")", at), tok("AND", at), tok("(", at)]);
+                        e.extend(v.expr);
+                        e.push(tok(")", at));
+                        Ok(Value {
+                            expr: e,
+                            guard: v.guard,
+                        })
+                    }
+                    _ => Ok(v),
+                }
             }
             "BoxTreeAssign" => self.assign(node, true),
             "BoxTreeTerminator" if prop(node, "Input").is_none_or(|i| i.name() == "n") => {
+                // the power rail, or inside a parallel branch the line that powers the branch
                 Ok(Value {
-                    expr: vec![tok("TRUE", node.tag_start())],
+                    expr: match &self.line {
+                        Some(l) => l.expr.clone(),
+                        None => vec![tok("TRUE", node.tag_start())],
+                    },
                     guard: None,
                 })
             }
             "BoxTreeDemux" => self.split(node),
+            "BoxTreeParallel" => self.parallel(node, true),
             "BoxTreeBox" => match self.boxed(node)? {
                 Some(v) => Ok(v),
                 None => Err(self.error_at(
@@ -417,7 +464,7 @@ impl Lowering {
     fn keep(&mut self, node: &Element, v: Value) -> Res<Value> {
         self.no_guard(&v, node)?;
         self.no_variables(node, "a value written to several outputs")?;
-        let ty = self.type_of(node)?;
+        let ty = self.type_of(node, None)?;
         let name = format!("_nwl_value{}", self.body.temps.len() + 1);
         self.body.temps.push((name.clone(), ty));
         let at = node.tag_start();
@@ -546,16 +593,16 @@ impl Lowering {
         };
         if !self.declares {
             let v = self.value(input, None)?;
-            self.no_guard(&v, node)?;
+            let v = self.unguard(v, input, None)?;
             let Some(name) = self.read_in_place(&v) else {
                 return Err(self.needs_variable(node, "a branch"));
             };
             self.splits.insert(id, name);
             return Ok(v);
         }
-        let ty = self.type_of(input)?;
         let v = self.value(input, None)?;
-        self.no_guard(&v, node)?;
+        let v = self.unguard(v, input, None)?;
+        let ty = self.type_of(input, None)?;
         let name = format!("_nwl_split{}", self.body.temps.len() + 1);
         self.body.temps.push((name.clone(), ty));
         self.push(&name, node.tag_start());
@@ -569,11 +616,12 @@ impl Lowering {
         })
     }
 
-    /// The type of a branch's input, for its temporary.
-    fn type_of(&self, node: &Element) -> Res<String> {
-        let ty = match kind(node, None) {
+    /// The type of the value of `node` (an element of a list of element type `cet`), for the
+    /// temporary that keeps it.
+    fn type_of(&self, node: &Element, cet: Option<&str>) -> Res<String> {
+        let ty = match kind(node, cet) {
             "BoxTreeOperand" => prop(node, "Operand").and_then(|o| string(o, "Type")),
-            "BoxTreeTerminator" => Some("BOOL".into()),
+            "BoxTreeTerminator" | "BoxTreeParallel" => Some("BOOL".into()),
             "BoxTreeDemux" => {
                 let id = string(node, "VarId").unwrap_or_default();
                 self.splits.get(&id).and_then(|t| {
@@ -585,7 +633,7 @@ impl Lowering {
                 })
             }
             "BoxTreeAssign" => match prop(node, "RValue") {
-                Some(rv) => return self.type_of(rv),
+                Some(rv) => return self.type_of(rv, None),
                 None => None,
             },
             "BoxTreeBox" => {
@@ -600,7 +648,10 @@ impl Lowering {
                         .iter()
                         .position(|i| i.name() == "n")
                         .or((items.is_empty() && names.len() == 1).then_some(0));
-                    flowing.and_then(|k| types.get(k).cloned())
+                    flowing
+                        .and_then(|k| types.get(k).cloned())
+                        .filter(|t| !t.trim().is_empty())
+                        .or_else(|| operator_type(node, &call))
                 }
             }
             _ => None,
@@ -616,7 +667,9 @@ impl Lowering {
             _ => Err(self.error_at(
                 code::E0325,
                 node,
-                "the type of the value that this branch splits is not given in the archive".into(),
+                "the type of this value, which the network keeps in a variable (a branch, or the \
+                 result of a box with EN that feeds another element), is not given in the archive"
+                    .into(),
             )),
         }
     }
@@ -662,12 +715,240 @@ impl Lowering {
             return Err(self.error_at(
                 code::E0325,
                 at,
-                "the result of a box with EN feeds another box or branch: ladderc writes such a \
-                 result only to variables"
+                "the result of a box with EN is written to several outputs, the first not a plain \
+                 coil: ladderc writes such a result to its outputs only when a plain coil comes first"
                     .into(),
             ));
         }
         Ok(())
+    }
+
+    /// A value that an element reads from `node` (of a list of element type `cet`): when it comes
+    /// from a box with EN, kept in a temporary that holds the box's result when EN is TRUE and
+    /// the initial value of its type when EN is FALSE (the box did not run: README "EN/ENO", as
+    /// matiec passes it on), read from a second temporary that nothing writes.
+    fn unguard(&mut self, v: Value, node: &Element, cet: Option<&str>) -> Res<Value> {
+        let Some(g) = v.guard.clone() else {
+            return Ok(v);
+        };
+        if !self.declares {
+            return Err(self.needs_variable(
+                node,
+                "the result of a box with EN that feeds another element",
+            ));
+        }
+        let ty = self.type_of(node, cet)?;
+        let n = self.body.temps.len() + 1;
+        let (name, initial) = (format!("_nwl_result{n}"), format!("_nwl_initial{n}"));
+        self.body.temps.push((name.clone(), ty.clone()));
+        self.body.temps.push((initial.clone(), ty));
+        let at = v.expr.first().map_or(node.tag_start(), |t| t.at);
+        self.stmt(
+            &[&name, ":=", &initial, ";", "IF", &g, "THEN", &name, ":="],
+            at,
+        );
+        self.push_all(v.expr);
+        self.stmt(&[";", "END_IF", ";"], at);
+        Ok(Value {
+            expr: vec![tok(&name, at)],
+            guard: None,
+        })
+    }
+
+    /// A closed parallel branch (`BoxTreeParallel`, Beckhoff Infosys "Closed line branch"): its
+    /// `Input` (the line before it; none: the line its parent gives it) evaluated once, then its
+    /// branches (`Trees`), each powered by that line (its terminators are the line, its leftmost
+    /// contact is in series with it); its value is the OR of the branches'. Mode `Sequential`
+    /// (a single vertical line) evaluates the branches top to bottom; mode `BoxShortCircuit` (a
+    /// double line) first the branches without a box (contacts and logic only) and, only when
+    /// none of them is TRUE, the branches with boxes top to bottom (all of them, their values
+    /// OR-ed). `used`: whether the value flows on (a network item's does not).
+    fn parallel(&mut self, node: &Element, used: bool) -> Res<Value> {
+        let at = node.tag_start();
+        let mode = string(node, "Mode").unwrap_or_default();
+        let short = match mode.as_str() {
+            "Sequential" => false,
+            "BoxShortCircuit" => true,
+            m => {
+                return Err(self.error_at(
+                    code::E0325,
+                    node,
+                    format!("closed parallel branch of mode `{m}`, which ladderc does not read"),
+                ))
+            }
+        };
+        let list = prop(node, "Trees")
+            .filter(|t| t.name() == "l2")
+            .ok_or_else(|| self.unsupported(node, "parallel branch without its branches"))?;
+        let cet = list.attr("cet");
+        let trees: Vec<&Element> = list.children.iter().filter(|t| t.name() == "o").collect();
+        if trees.is_empty() {
+            return Err(self.unsupported(node, "parallel branch without its branches"));
+        }
+        // the line that powers the branches, evaluated once (a box of a branch may write what it
+        // reads)
+        let line = match prop(node, "Input").filter(|i| i.name() == "o") {
+            None => self.line.as_ref().map(|l| l.expr.clone()),
+            Some(input) => {
+                let v = self.value(input, None)?;
+                let v = self.unguard(v, input, None)?;
+                if is_true(&v) {
+                    None
+                } else if let Some(name) = self.read_in_place(&v) {
+                    Some(vec![tok(&name, at)])
+                } else {
+                    self.no_variables(node, "the line before a closed parallel branch")?;
+                    let name = format!("_nwl_line{}", self.body.temps.len() + 1);
+                    self.body.temps.push((name.clone(), "BOOL".into()));
+                    self.push(&name, at);
+                    self.push(":=", at);
+                    self.push_all(v.expr);
+                    self.push(";", at);
+                    Some(vec![tok(&name, at)])
+                }
+            }
+        };
+        // (a box is any call but the AND and OR that contacts in series and in parallel are)
+        let has_box = |t: &Element| {
+            std::iter::once(t).chain(t.walk()).any(|e| {
+                string(e, "CallType").is_some_and(|c| !["And", "Or"].contains(&c.as_str()))
+            })
+        };
+        let (first, then): (Vec<&Element>, Vec<&Element>) = if short {
+            trees.iter().partition(|t| !has_box(t))
+        } else {
+            (trees, Vec::new())
+        };
+        // the value: a temporary that the branches are OR-ed into, or (an action's) their
+        // expressions, each one variable read in place
+        let result = if used && self.declares {
+            let name = format!("_nwl_parallel{}", self.body.temps.len() + 1);
+            self.body.temps.push((name.clone(), "BOOL".into()));
+            Some(name)
+        } else {
+            None
+        };
+        let mut values: Vec<Vec<Tok>> = Vec::new();
+        for t in &first {
+            let v = self.branch(t, cet, &line)?;
+            values.push(v.expr);
+        }
+        let or = |values: Vec<Vec<Tok>>| -> Vec<Tok> {
+            let mut e = vec![tok("(", at)];
+            for (k, v) in values.into_iter().enumerate() {
+                if k > 0 {
+                    e.push(tok("OR", at));
+                }
+                e.push(tok("(", at));
+                e.extend(v);
+                e.push(tok(")", at));
+            }
+            e.push(tok(")", at));
+            e
+        };
+        if then.is_empty() {
+            if let Some(r) = &result {
+                self.stmt(&[r, ":="], at);
+                self.push_all(or(values));
+                self.push(";", at);
+            } else if used {
+                return self.in_place_or(node, values, or);
+            }
+        } else {
+            if !used || result.is_some() {
+                // a short circuit: the branches with boxes run only when no other one is TRUE
+                let skip = if values.is_empty() {
+                    None
+                } else {
+                    Some(or(std::mem::take(&mut values)))
+                };
+                let opened = match (&result, skip) {
+                    (Some(r), None) => {
+                        self.stmt(&[r, ":=", "FALSE", ";"], at);
+                        false
+                    }
+                    (Some(r), Some(skip)) => {
+                        self.stmt(&[r, ":="], at);
+                        self.push_all(skip);
+                        self.stmt(&[";", "IF", "NOT", r, "THEN"], at);
+                        true
+                    }
+                    (None, Some(skip)) => {
+                        self.stmt(&["IF", "NOT"], at);
+                        self.push_all(skip);
+                        self.push("THEN", at);
+                        true
+                    }
+                    (None, None) => false,
+                };
+                for t in &then {
+                    let v = self.branch(t, cet, &line)?;
+                    if let Some(r) = &result {
+                        self.stmt(&[r, ":=", r, "OR", "("], at);
+                        self.push_all(v.expr);
+                        self.stmt(&[")", ";"], at);
+                    }
+                }
+                if opened {
+                    self.stmt(&["END_IF", ";"], at);
+                }
+            } else {
+                return Err(self.needs_variable(node, "a closed parallel branch with boxes"));
+            }
+        }
+        Ok(Value {
+            expr: match result {
+                Some(r) => vec![tok(&r, at)],
+                None => vec![tok("FALSE", at)],
+            },
+            guard: None,
+        })
+    }
+
+    /// In an action (no declarations): the OR of a parallel branch's values, each one variable
+    /// read where it is used.
+    fn in_place_or(
+        &self,
+        node: &Element,
+        values: Vec<Vec<Tok>>,
+        or: impl Fn(Vec<Vec<Tok>>) -> Vec<Tok>,
+    ) -> Res<Value> {
+        for v in &values {
+            let v = Value {
+                expr: v.clone(),
+                guard: None,
+            };
+            if !is_true(&v) && self.read_in_place(&v).is_none() {
+                return Err(self.needs_variable(node, "a closed parallel branch"));
+            }
+        }
+        Ok(Value {
+            expr: or(values),
+            guard: None,
+        })
+    }
+
+    /// One branch of a closed parallel branch, powered by `line` (`None`: the power rail); a box
+    /// whose outputs do not reach the closing line passes FALSE on.
+    fn branch(&mut self, tree: &Element, cet: Option<&str>, line: &Option<Vec<Tok>>) -> Res<Value> {
+        let outer = self.line.take();
+        self.line = line.as_ref().map(|e| Line {
+            expr: e.clone(),
+            left: leftmost(tree, cet),
+        });
+        let v = if kind(tree, cet) == "BoxTreeBox" {
+            self.boxed(tree).map(|v| {
+                v.unwrap_or_else(|| Value {
+                    expr: vec![tok("FALSE", tree.tag_start())],
+                    guard: None,
+                })
+            })
+        } else {
+            self.value(tree, cet)
+        };
+        let v = v.and_then(|v| self.unguard(v, tree, cet));
+        self.line = outer;
+        v
     }
 
     /// A box: its inputs, then its call (under `IF en THEN` when it has an EN input), then its
@@ -708,7 +989,7 @@ impl Lowering {
                 continue;
             }
             let v = self.value(input, cet)?;
-            self.no_guard(&v, input)?;
+            let v = self.unguard(v, input, cet)?;
             let flags = in_flags.get(k).copied().flatten().unwrap_or(0);
             let v = self.input_flags(
                 v,
@@ -1154,6 +1435,57 @@ fn flag_names(f: u32) -> String {
         out.push(format!("{:#x}", f >> names.len() << names.len()));
     }
     out.join("+")
+}
+
+/// Whether a value is the literal TRUE (the power rail).
+fn is_true(v: &Value) -> bool {
+    v.guard.is_none() && v.expr.len() == 1 && v.expr[0].text.eq_ignore_ascii_case("TRUE")
+}
+
+/// The offset of the leftmost operand of a branch `el` (of a list of element type `cet`): the
+/// contact the line before the branch enters (following first inputs).
+fn leftmost(el: &Element, cet: Option<&str>) -> Option<usize> {
+    match kind(el, cet) {
+        "BoxTreeOperand" => Some(el.tag_start()),
+        "BoxTreeBox" => {
+            let items = prop(el, "InputItems")?;
+            leftmost(items.children.first()?, items.attr("cet"))
+        }
+        "BoxTreeParallel" | "BoxTreeDemux" => prop(el, "Input")
+            .filter(|i| i.name() == "o")
+            .and_then(|i| leftmost(i, None)),
+        "BoxTreeAssign" => prop(el, "RValue").and_then(|r| leftmost(r, None)),
+        _ => None,
+    }
+}
+
+/// The type of the result of an operator box whose archive does not give it (MOVE, the
+/// arithmetic, SEL, MAX ...): the type of its variable inputs when they agree.
+fn operator_type(node: &Element, call: &str) -> Option<String> {
+    const SAME_TYPE: &[&str] = &[
+        "Move", "Add", "Sub", "Mul", "Div", "Mod", "Max", "Min", "Abs", "Neg",
+    ];
+    if !SAME_TYPE.contains(&call) {
+        return None;
+    }
+    let en = string(node, "EN").as_deref() == Some("true");
+    let items = prop(node, "InputItems")?;
+    let cet = items.attr("cet");
+    let mut types = items
+        .children
+        .iter()
+        .skip(usize::from(en))
+        .filter(|i| kind(i, cet) == "BoxTreeOperand")
+        .filter_map(|i| prop(i, "Operand"))
+        .filter(|o| {
+            string(o, "Operand").is_some_and(|t| {
+                t.trim()
+                    .starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+            })
+        })
+        .map(|o| string(o, "Type").unwrap_or_default());
+    let first = types.next()?;
+    (!first.trim().is_empty() && types.all(|t| t == first)).then_some(first)
 }
 
 /// Operators whose result is BOOL.
