@@ -293,7 +293,7 @@ fn memory_functions_are_bounded_by_their_variables() {
     );
 }
 
-/// A pointer whose variable cannot be known (a pointer moved back; a pointer variable itself is
+/// A pointer whose variable cannot be known (an address moved back; a pointer variable itself is
 /// bounded by its reference since Session 34, `pointer_index_run`), a wrong argument list, a count
 /// that is no integer and a located variable: one located error each.
 #[test]
@@ -301,7 +301,7 @@ fn memory_functions_on_unknown_objects_are_refused() {
     let (code, lines) = check_text(
         "m.st",
         "PROGRAM Main\nVAR a, b : ARRAY[0..9] OF BYTE; p : POINTER TO BYTE; END_VAR\np := ADR(a);\n\
-         MEMCPY(destAddr := p - 1, srcAddr := ADR(b), n := SIZEOF(b));\nMEMSET(ADR(a), 1);\n\
+         MEMCPY(destAddr := ADR(a) - 1, srcAddr := ADR(b), n := SIZEOF(b));\nMEMSET(ADR(a), 1);\n\
          MEMCPY(dest := ADR(a), srcAddr := ADR(b), n := 1);\nEND_PROGRAM\n",
     );
     assert_eq!(code, Some(1));

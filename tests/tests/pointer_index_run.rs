@@ -245,14 +245,16 @@ fn memory_functions_take_pointer_variables_bounded_by_their_variable() {
     );
 }
 
-/// A pointer moved back by arithmetic, or a value that is no pointer, is still one E1035 (a pointer
-/// moved on, `p + n`, is n bytes into its variable since round 23: `unseen_projects_r23.rs`).
+/// An address moved back by arithmetic (`ADR(a) - 2`), or a value that is no pointer, is still one
+/// E1035 (a pointer moved on, `p + n`, is n bytes into its variable since round 23:
+/// `unseen_projects_r23.rs`; a pointer variable moved back, `p - n`, is bounded as the pointer it
+/// makes since round 24: `unseen_projects_r24.rs`).
 #[test]
 fn a_memory_function_on_pointer_arithmetic_is_e1035() {
     let heads = rejected_heads(
         "memarith.st",
         "PROGRAM Main\nVAR a : ARRAY[0..3] OF INT; p : POINTER TO INT; n : UDINT; k : UDINT; END_VAR\n\
-         p := ADR(a);\nn := MEMSET(p - 2, 0, 2);\nn := MEMSET(k, 0, 2);\nEND_PROGRAM\n",
+         p := ADR(a);\nn := MEMSET(ADR(a) - 2, 0, 2);\nn := MEMSET(k, 0, 2);\nEND_PROGRAM\n",
     );
     assert_eq!(heads.len(), 2, "{heads:?}");
     assert!(

@@ -18,6 +18,9 @@
 //!   the type that holds both (`LINT`), not at a conversion that changes the outcome;
 //! - Tc2_System's `PVOID` (an untyped address) is a bounded `POINTER TO BYTE`: `p := ADR(x)`,
 //!   MEMCPY through it, a method returning one (before: E1003 unknown type);
+//! - a memory function given a pointer variable moved back, `MEMCPY(ADR(d), p - n, n)` (the last
+//!   n characters before where `p` points, RoddenLab's RIGHT of a big string): bounded as the
+//!   pointer it makes (before: E1035);
 //! - an IEC 61131-10 XML file (B&R Automation Studio 6's LD) is one E3002 that names the format
 //!   (before: "root element is <Project>, expected a PLCopen <project>");
 //! - run-time sites of an `ARRAY [*]` element and of an ANY input's `pValue` are named as written
@@ -275,5 +278,35 @@ fn an_iec_61131_10_file_is_named_as_such() {
     assert_eq!(
         lines,
         ["Cyclic.ld:3:1: error[E3002]: an IEC 61131-10 XML file (B&R Automation Studio 6 writes its LD and FBD so): ladderc reads PLCopen TC6 XML, not this format (hint: leave the file out (a B&R program's own declarations are then not compiled either, W0022), or give the POU as ST)"]
+    );
+}
+
+/// `p` points just after a STRING's last character; `MEMCPY(ADR(d), p - n, n)` copies the last n
+/// characters; moved before the string (`p - far`), the count is clipped to 0 and the site named
+/// at the end of the run (under the sanitizers).
+#[test]
+fn a_pointer_variable_moved_back_bounds_a_memory_function() {
+    let (trace, stderr) = common::run_text(
+        "right.st",
+        "PROGRAM Main
+VAR
+  s : STRING(20) := 'abcdefgh';
+  d : ARRAY[0..9] OF BYTE;
+  p : POINTER TO BYTE;
+  n : DINT := 3;
+  far : DINT := 40;
+END_VAR
+p := ADR(s) + 2 + 8; (* past the 2-byte length and the 8 characters *)
+MEMCPY(ADR(d), p - n, n);
+MEMCPY(ADR(d[5]), p - far, 2);
+END_PROGRAM
+",
+        1,
+        "Main.d[0],Main.d[1],Main.d[2],Main.d[5]",
+    );
+    assert_eq!(trace.lines().nth(1), Some("0,0,102,103,104,0"), "{trace}");
+    assert!(
+        stderr.contains("runtime: memory function count beyond its variables (first: MEMCPY in Main at right.st:11;"),
+        "{stderr}"
     );
 }

@@ -169,6 +169,44 @@ impl PouLowering<'_> {
         out: &mut Vec<il::IlStmt>,
         diags: &mut Diagnostics,
     ) -> Option<(il::VarRef, bool, Option<Operand>)> {
+        // `p - n` of a pointer variable (a pointer to a text's end moved back over its last n
+        // characters, RoddenLab's RIGHT of a big string): the moved pointer, held in a
+        // temporary, is bounded as any pointer (moved before its variable: no room, the count
+        // clipped to 0 and reported at the end of the run)
+        if let ExprKind::Binary {
+            op: super::super::ast::BinaryOp::Sub,
+            left,
+            ..
+        } = &e.kind
+        {
+            if let ExprKind::Place(p) = &left.kind {
+                let env = self.env();
+                let pointer = matches!(
+                    env.place_type(p).map(|t| env.resolve(&t)),
+                    Some(il::TypeRef::Ref {
+                        kind: il::RefKind::Pointer | il::RefKind::RefTo,
+                        ..
+                    })
+                );
+                if pointer {
+                    let ty = self.temp_type(left, None);
+                    let t = self.temp(ty, e.span);
+                    self.value(e, out, diags);
+                    out.push(super::simple(
+                        il::Op::St,
+                        false,
+                        Some(super::var_operand(&t)),
+                        e.span,
+                    ));
+                    let v = il::VarRef {
+                        base: t,
+                        accessors: Default::default(),
+                        span: e.span,
+                    };
+                    return Some((v, true, None));
+                }
+            }
+        }
         // `ADR(buf) + n`, `n + ADR(buf)` (Tc2_System code writes into a buffer from an offset):
         // the variable, and the offset in bytes (the C clips the count to the bytes after it)
         if let ExprKind::Binary {
