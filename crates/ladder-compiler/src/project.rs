@@ -612,7 +612,8 @@ fn version(ctx: &mut Ctx, root: &Element) -> Version {
 
 /// Whether ladderc reads a vendor data block (`<data name="...">`): the CODESYS/TwinCAT global
 /// variable lists, applications (their tasks, data types and POUs), task settings, and the methods
-/// (compiled) and properties (E0303) of POUs, the SFC settings of charts.
+/// and properties of POUs, their EXTENDS / IMPLEMENTS and the project's INTERFACEs
+/// (`crate::xml_oop`), the SFC settings of charts.
 fn is_read_vendor_data(name: &str) -> bool {
     [
         "/globalvars",
