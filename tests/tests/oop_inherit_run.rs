@@ -177,11 +177,12 @@ PROGRAM Main\nVAR b : FB_Base; itf : I_Get; j : I_Get := 5; r : INT; END_VAR\nit
     );
 }
 
-/// CODESYS writes EXTENDS and IMPLEMENTS of a PLCopen XML export in the vendor data of the POU's
-/// interface (`data name=".../pouinheritance"`, `<Inheritance><Extends>`): one E0303 at the element
-/// naming the clause; the POU's body and methods are not compiled (no error per inherited name).
+/// CODESYS's PLCopen XML writes EXTENDS / IMPLEMENTS in the vendor data of the POU's
+/// interface (`data name=".../pouinheritance"`, `<Inheritance><Extends>`): compiled as in ST
+/// text (`codesys_xml_oop_run.rs`), so a base the file does not declare is the ST front end's one
+/// E0330 at the `<Extends>` text (no error per inherited name, nor for the interface it names).
 #[test]
-fn inheritance_in_codesys_plcopen_xml_is_one_located_error() {
+fn inheritance_in_codesys_plcopen_xml_of_a_missing_base_is_one_located_error() {
     let fixture =
         Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/real_gaps/xml_methods.xml");
     let src = std::fs::read_to_string(fixture).unwrap().replacen(
@@ -196,7 +197,7 @@ fn inheritance_in_codesys_plcopen_xml_is_one_located_error() {
         .collect();
     assert_eq!(
         errors,
-        ["inh.xml:14:115: error[E0303]: `FB_Axis` EXTENDS FB_Base IMPLEMENTS I_Axis: inheritance in PLCopen XML is not compiled [POU `FB_Axis`]"]
+        ["inh.xml:14:137: error[E0330]: `FB_Axis` EXTENDS `FB_Base`, which names no function block of the project [POU `FB_Axis`]"]
     );
 }
 

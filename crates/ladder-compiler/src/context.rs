@@ -31,6 +31,9 @@ pub struct Ctx<'a> {
     /// The `<configVariable>` entries of the configurations read so far (VAR_CONFIG), applied
     /// once every input file is read (`il_frontend::st::file::apply_var_config`).
     pub var_config: Vec<il_frontend::st::file::ConfigEntry>,
+    /// The ST bodies left to the ST front end (`crate::xml_oop`: a file with CODESYS's
+    /// interfaces or inheritance): compiled with the other files' pending bodies.
+    pub pending: Vec<il_frontend::st::file::PendingBody>,
 }
 
 impl<'a> Ctx<'a> {
@@ -77,6 +80,7 @@ impl<'a> Ctx<'a> {
             local_constants: HashMap::new(),
             actions: Vec::new(),
             var_config: Vec::new(),
+            pending: Vec::new(),
         }
     }
     /// The value of a named integer constant (the POU's own first).

@@ -31,6 +31,7 @@ pub(crate) mod twincat_nwl;
 pub mod values;
 pub mod var_config;
 pub mod xml;
+pub(crate) mod xml_oop;
 
 pub use il_frontend::ast;
 
@@ -38,16 +39,23 @@ use diagnostics::{code, Diagnostic, Diagnostics, FileId};
 
 /// Reads a PLCopen XML project and lowers it to the IL syntax tree.
 pub fn compile_xml(file: FileId, xml: &str, diags: &mut Diagnostics) -> ast::CompilationUnit {
-    let (unit, entries) = compile_xml_with_var_config(file, xml, diags);
+    let (unit, entries, pending) = compile_xml_with_var_config(file, xml, diags);
     let mut units = [unit];
+    if !pending.is_empty() {
+        il_frontend::st::file::compile_pending(&mut units, &pending, diags);
+    }
     il_frontend::st::file::apply_var_config(&mut units, entries, diags);
     let [unit] = units;
     unit
 }
 
-/// [`compile_xml`] without applying the configurations' `<configVars>` (VAR_CONFIG): the unit and
-/// the entries, for a caller that applies them once every input file is read
-/// (`il_frontend::st::file::apply_var_config`), as the entries may name programs of other files.
+/// [`compile_xml`] without applying the configurations' `<configVars>` (VAR_CONFIG) and without
+/// compiling the ST bodies left to the ST front end: the unit, the entries and those bodies, for a
+/// caller that applies the entries once every input file is read
+/// (`il_frontend::st::file::apply_var_config`), as they may name programs of other files, and
+/// compiles the bodies with the other files' (`il_frontend::st::file::compile_pending`). The
+/// bodies are those of a file with CODESYS's interfaces or inheritance in its vendor data
+/// (`xml_oop`): its POUs of ST text, whose statements the unit leaves empty.
 pub fn compile_xml_with_var_config(
     file: FileId,
     xml: &str,
@@ -55,6 +63,7 @@ pub fn compile_xml_with_var_config(
 ) -> (
     ast::CompilationUnit,
     Vec<il_frontend::st::file::ConfigEntry>,
+    Vec<il_frontend::st::file::PendingBody>,
 ) {
     let arena = xml::Arena::new();
     let (root, err) = xml::parse(xml, &arena);
@@ -80,7 +89,11 @@ pub fn compile_xml_with_var_config(
             );
             // `ADR('text')` in ST bodies: the literals' hidden copies made global variables
             il_frontend::st::var_stat::hoist(std::slice::from_mut(&mut unit));
-            (unit, std::mem::take(&mut ctx.var_config))
+            (
+                unit,
+                std::mem::take(&mut ctx.var_config),
+                std::mem::take(&mut ctx.pending),
+            )
         }
         None => {
             let span = ctx.span(0, 0);
@@ -89,7 +102,7 @@ pub fn compile_xml_with_var_config(
                 span,
                 "no <project> element: the file is empty or not XML",
             );
-            (ast::CompilationUnit::default(), Vec::new())
+            (ast::CompilationUnit::default(), Vec::new(), Vec::new())
         }
     }
 }

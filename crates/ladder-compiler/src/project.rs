@@ -67,6 +67,9 @@ pub struct Index {
     /// The methods of each function block (CODESYS vendor data), by upper-case block name: a call
     /// `M(...)` inside the block runs the block's own method.
     pub method_sigs: HashMap<String, Vec<il_frontend::st::types::MethodSig>>,
+    /// The INTERFACEs of CODESYS's vendor data (`crate::xml_oop`), by upper-case name: types the
+    /// file defines (their variables are compiled by the ST front end).
+    pub interfaces: HashSet<String>,
     /// The ST lowering's view of the fields above ([`crate::st_body::declarations`]), built on first use
     /// and shared by every body: building it per body cost bodies x POUs. The fields are complete before
     /// any body is lowered.
@@ -245,8 +248,29 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     // CODESYS exports a function block's METHODs in its vendor data: their hidden variables are
     // part of the block's interface (other POUs read a method's result)
     let mut methods: HashMap<String, Vec<il_frontend::st::file::PendingMethod>> = HashMap::new();
-    // POUs that inherit in CODESYS's vendor data: their bodies (and methods') are not compiled
+    // POUs that inherit in CODESYS's vendor data and whose body is not ST: not compiled (E0303)
     let mut not_compiled: HashSet<String> = HashSet::new();
+    // CODESYS's object orientation in vendor data (`xml_oop`): the interfaces, and in a file that
+    // has them or a POU that inherits, each POU of ST text goes to the ST front end as a pending
+    // body (flattened, checked and lowered there, as an `.st` file's)
+    let resources: Vec<&Element> = application_resources(root)
+        .into_iter()
+        .chain(instance_resources(root))
+        .collect();
+    let interface_els = crate::xml_oop::interface_elements(root, &resources);
+    let oop_file = !interface_els.is_empty()
+        || pou_els
+            .iter()
+            .any(|p| crate::xml_oop::inheritance_element(p).is_some());
+    for el in &interface_els {
+        if let Some(pb) = crate::xml_oop::interface(ctx, el) {
+            if let Some(il_frontend::st::inherit::Oop::Interface(i)) = pb.oop.as_deref() {
+                index.interfaces.insert(i.name.key());
+            }
+            ctx.pending.push(pb);
+        }
+    }
+    let mut as_text: HashSet<String> = HashSet::new();
     // implicit enumerations of the interfaces (`<type><enum>`) get CODESYS's internal type name, so
     // an ST body types their values by context (`mode := Run` where two enumerations have `Run`)
     let mut enum_namer = il_frontend::st::implicit_enums::PouNamer::new(&data_types);
@@ -260,24 +284,42 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             None => Vec::new(),
         };
         if let Some(mut h) = header {
-            if xml_inheritance(ctx, p, &h) {
-                // EXTENDS / IMPLEMENTS in CODESYS's vendor data (E0303): not compiled
+            let inh = crate::xml_oop::inheritance_element(p);
+            let pending = if oop_file {
+                let oop = inh.map(|i| crate::xml_oop::block_oop(ctx, i));
+                crate::xml_oop::pending_body(ctx, p, &h, ms.clone(), oop)
+            } else {
+                None
+            };
+            if let (Some(inh), None) = (inh, &pending) {
+                // EXTENDS / IMPLEMENTS of a POU whose body is not ST (E0303): not compiled
+                xml_inheritance(ctx, inh, &h);
                 not_compiled.insert(h.name.key());
                 for m in &mut ms {
                     m.text.clear();
                 }
             }
+            // (a pending body's methods give its block their variables in the ST front end: the
+            // block's signature gets them here for the XML bodies that call them)
+            let mut with_methods = pending.as_ref().map(|_| h.clone());
             if !ms.is_empty() {
-                il_frontend::st::file::add_method_vars(&mut h, &ms, ctx.diags);
+                let target = with_methods.as_mut().unwrap_or(&mut h);
+                il_frontend::st::file::add_method_vars(target, &ms, ctx.diags);
                 index.method_sigs.insert(
                     h.name.key(),
                     ms.iter()
                         .map(il_frontend::st::types::MethodSig::of)
                         .collect(),
                 );
-                methods.insert(h.name.key(), ms);
+                if pending.is_none() {
+                    methods.insert(h.name.key(), ms);
+                }
             }
-            let mut sig = signature(&h);
+            if let Some(pb) = pending {
+                as_text.insert(h.name.key());
+                ctx.pending.push(pb);
+            }
+            let mut sig = signature(with_methods.as_ref().unwrap_or(&h));
             sig.actions = p
                 .child("actions")
                 .into_iter()
@@ -370,6 +412,11 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             pou.var_blocks.extend(blocks);
         }
         let is_used = used.as_ref().is_none_or(|u| u.contains(&pou.name.key()));
+        if as_text.contains(&pou.name.key()) {
+            // its body and methods are lowered by the ST front end (`ctx.pending`)
+            unit.items.push(LibraryElement::Pou(pou));
+            continue;
+        }
         let (stmts, hidden) = if not_compiled.contains(&pou.name.key()) {
             (Vec::new(), Vec::new())
         } else {
@@ -582,7 +629,8 @@ fn version(ctx: &mut Ctx, root: &Element) -> Version {
 
 /// Whether ladderc reads a vendor data block (`<data name="...">`): the CODESYS/TwinCAT global
 /// variable lists, applications (their tasks, data types and POUs), task settings, and the methods
-/// (compiled) and properties (E0303) of POUs, the SFC settings of charts.
+/// and properties of POUs, their EXTENDS / IMPLEMENTS and the project's INTERFACEs
+/// (`crate::xml_oop`), the SFC settings of charts.
 fn is_read_vendor_data(name: &str) -> bool {
     [
         "/globalvars",
@@ -600,8 +648,9 @@ fn is_read_vendor_data(name: &str) -> bool {
         // a CODESYS chart's SFC settings: its flags (`sfc::flags`: SFCInit and SFCReset run,
         // every other enabled flag is W3402)
         "/sfcsettings",
-        // EXTENDS / IMPLEMENTS of a POU: E0303 (`xml_inheritance`)
+        // EXTENDS / IMPLEMENTS of a POU, and the project's INTERFACEs (`xml_oop`)
         "/pouinheritance",
+        "/plcopenxml/interface",
     ]
     .iter()
     .any(|s| name.ends_with(s))
@@ -726,7 +775,7 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
 }
 
 /// The return type and variable lists of an `<interface>` (of a POU or a CODESYS method).
-fn read_interface(
+pub(crate) fn read_interface(
     ctx: &mut Ctx,
     iface: &Element,
     return_type: &mut Option<il_frontend::ast::TypeRef>,
@@ -841,53 +890,30 @@ fn local_or(
     local.get(&k).or_else(|| globals.get(&k)).copied()
 }
 
-/// CODESYS's inheritance of a POU (`interface/addData/data[.../pouinheritance]/Inheritance` with
-/// `<Extends>` and `<Implements>`): one E0303 at the element, and `true` (the POU's body is not
-/// compiled). ladderc flattens inheritance in `.st` and TwinCAT files (`il_frontend::st::inherit`),
-/// not in PLCopen XML, whose bodies may be graphical.
-fn xml_inheritance(ctx: &mut Ctx, p: &Element, pou: &Pou) -> bool {
-    let Some(data) = p
-        .child("interface")
-        .into_iter()
-        .flat_map(|i| i.children_named("addData"))
-        .flat_map(|a| a.children_named("data"))
-        .find(|d| {
-            d.attr("name")
-                .is_some_and(|n| n.ends_with("/pouinheritance"))
-        })
-    else {
-        return false;
-    };
-    let Some(inh) = data.child("Inheritance") else {
-        return false;
-    };
-    let clause: Vec<String> = inh
-        .children
-        .iter()
-        .filter(|c| matches!(c.name(), "Extends" | "Implements"))
-        .map(|c| format!("{} {}", c.name().to_ascii_uppercase(), c.text_ref().trim()))
-        .collect();
-    if clause.is_empty() {
-        return false;
-    }
+/// CODESYS's inheritance of a POU whose body is not ST (`interface/addData/data[.../pouinheritance]/
+/// Inheritance` with `<Extends>` and `<Implements>`, `crate::xml_oop`): one E0303 at the element;
+/// the POU's body is not compiled. ladderc flattens inheritance in ST text (`.st`, TwinCAT files,
+/// and the ST bodies of PLCopen XML: `il_frontend::st::inherit`), not in graphical bodies.
+fn xml_inheritance(ctx: &mut Ctx, inh: &Element, pou: &Pou) {
     ctx.report(
         Diagnostic::error(
             code::E0303,
             format!(
-                "`{}` {}: inheritance in PLCopen XML is not compiled",
+                "`{}` {}: inheritance is compiled for POUs whose body and actions are ST",
                 pou.name.name,
-                clause.join(" ")
+                crate::xml_oop::clause(inh)
             ),
         )
         .at(ctx.tag(inh))
         .with_primary_label("object-oriented extension (IEC 61131-3 ed. 3)")
-        .with_hint("export the POUs as ST text or TwinCAT files, where EXTENDS and IMPLEMENTS are compiled; the body of this POU is not compiled")
+        .with_hint(
+            "write the body of this POU in ST, or export it as ST text; its body is not compiled",
+        )
         .with_xml(XmlContext {
             pou: Some(pou.name.name.clone()),
             ..Default::default()
         }),
     );
-    true
 }
 
 /// The METHODs of a POU in CODESYS's vendor data (`addData/data[.../method]/Method`, with an
@@ -1096,6 +1122,7 @@ fn check_types(
             if !catalogue::is_library_type(&n.name)
                 && !index.types.contains_key(&n.key())
                 && !index.pous.contains_key(&n.key())
+                && !index.interfaces.contains(&n.key())
             {
                 if il_frontend::st::additional_blocks::is_additional(&n.name) {
                     additional.borrow_mut().insert(n.key());

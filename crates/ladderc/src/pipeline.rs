@@ -539,8 +539,9 @@ impl Session {
                 deferred_xml.push((units.len(), file, beremiz_dir.clone()));
                 units.push(il_frontend::ast::CompilationUnit::default());
             } else if file_lang == Lang::Xml {
-                let (mut unit, entries) =
+                let (mut unit, entries, bodies) =
                     ladder_compiler::compile_xml_with_var_config(file, src, &mut self.diags);
+                pending.extend(bodies);
                 if let Some(dir) = &beremiz_dir {
                     crate::beremiz::add_confnodes(self, dir, &mut unit);
                 }
@@ -608,7 +609,7 @@ impl Session {
                 var_config.extend(entries);
             }
         }
-        self.compile_xml_files(deferred_xml, &mut units, &mut var_config);
+        self.compile_xml_files(deferred_xml, &mut units, &mut var_config, &mut pending);
         // the names every file declares, and the global lists named after their files (a text
         // file is a list when it holds nothing else, as `text_lists::name_text_lists` names it)
         let is_list = |k: &usize| {
@@ -775,6 +776,7 @@ impl Session {
         files: Vec<(usize, diagnostics::FileId, Option<PathBuf>)>,
         units: &mut [il_frontend::ast::CompilationUnit],
         var_config: &mut Vec<il_frontend::st::file::ConfigEntry>,
+        pending: &mut Vec<il_frontend::st::file::PendingBody>,
     ) {
         let interfaces: Vec<ladder_compiler::project::OtherFiles> = files
             .iter()
@@ -814,9 +816,11 @@ impl Session {
             }
             let src = &self.map.get(file).text;
             let diags = &mut self.diags;
-            let (mut unit, entries) = ladder_compiler::project::with_other_files(other, || {
-                ladder_compiler::compile_xml_with_var_config(file, src, diags)
-            });
+            let (mut unit, entries, bodies) =
+                ladder_compiler::project::with_other_files(other, || {
+                    ladder_compiler::compile_xml_with_var_config(file, src, diags)
+                });
+            pending.extend(bodies);
             if let Some(dir) = &dir {
                 crate::beremiz::add_confnodes(self, dir, &mut unit);
             }

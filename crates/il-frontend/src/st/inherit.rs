@@ -276,8 +276,11 @@ pub fn flatten(
             Some(k) => out[k].methods.iter().collect(),
             None => Vec::new(),
         };
+        // (an interface reached twice, `IMPLEMENTS I_Step, I_Named` where I_Step EXTENDS
+        // I_Named, is checked once: one error per missing method)
+        let mut seen = HashSet::new();
         for itf in &c.oop.implements {
-            check_implements(c, itf, &methods, &interfaces, diags);
+            check_implements(c, itf, &methods, &interfaces, &mut seen, diags);
         }
     }
     let inits = check_instances(units, &classes, &interfaces, diags);
@@ -960,18 +963,21 @@ fn shown(m: &PendingMethod) -> String {
 }
 
 /// Checks that block `c` (its methods, inherited ones included) has every method of interface
-/// `itf` and of the interfaces it extends, with the same signature.
+/// `itf` and of the interfaces it extends, with the same signature; `seen`: the interfaces
+/// already checked for the block (not checked again).
 fn check_implements(
     c: &Class,
     itf: &Ident,
     methods: &[&PendingMethod],
     interfaces: &HashMap<String, &InterfaceOop>,
+    seen: &mut HashSet<String>,
     diags: &mut Diagnostics,
 ) {
     let mut todo = vec![itf.key()];
-    let mut seen = HashSet::new();
+    let mut depth = 0;
     while let Some(key) = todo.pop() {
-        if !seen.insert(key.clone()) || seen.len() > MAX_DEPTH {
+        depth += 1;
+        if !seen.insert(key.clone()) || depth > MAX_DEPTH {
             continue;
         }
         let Some(i) = interfaces.get(&key) else {
