@@ -657,7 +657,8 @@ fn is_read_vendor_data(name: &str) -> bool {
 }
 
 /// One W3002 for all `addData` / vendor elements of the file that ladderc does not read (the
-/// blocks it reads are searched for further vendor data inside them).
+/// blocks it reads are searched for further vendor data inside them; an empty `<addData/>`, as
+/// CODESYS writes one after each method's interface, holds nothing to ignore).
 fn vendor_data(ctx: &mut Ctx, root: &Element) {
     let mut found: Vec<&Element> = Vec::new();
     let mut ignored_name: Vec<(usize, &str)> = Vec::new();
@@ -677,7 +678,7 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
                         ignored_name.push((c.tag_start(), name));
                     }
                 }
-                if ignored || c.children.is_empty() {
+                if ignored {
                     found.push(c);
                 }
             } else if c.name() == "vendorElement" {
