@@ -160,7 +160,8 @@ fn one_error(path: &std::path::Path, want: &str) {
     assert!(errors[0].contains(want), "{stderr}");
 }
 
-/// OpenPLC Editor v4 (yaseralie/OpenPLC_Arduino, round 19): a `.ld` POU is declarations then JSON
+/// OpenPLC Editor v4 (yaseralie/OpenPLC_Arduino, round 19): a `.fbd` POU (a `.ld` one runs since
+/// round 24: openplc_v4_ld_run.rs) is declarations then JSON
 /// graphics: one located E1073 (before: 7,649 errors, one per JSON line), exit 1; its project
 /// folder (`project.json`, no plc.xml) is one E9001 that says so and names the generated XML
 /// (before: "Is a directory (os error 21)", "check the permissions"), exit 2.
@@ -174,17 +175,19 @@ fn an_openplc_editor_v4_json_body_and_project_folder_are_one_diagnostic_each() {
         "{ \"type\": \"plc-project\" }\n",
     )
     .unwrap();
-    let ld = programs.join("main.ld");
+    // (an FBD body, `"rung": {...}`; a ladder body's `"rungs"` are read since round 24:
+    // openplc_v4_ld_run.rs)
+    let ld = programs.join("main.fbd");
     std::fs::write(
         &ld,
         "PROGRAM main\nVAR\n\tLED1 : bool AT %QX0.0;\nEND_VAR\n\n{\n  \"name\": \"main\",\n  \
-         \"rungs\": [\n    {\n      \"id\": \"rung_1\",\n      \"nodes\": [],\n      \"edges\": []\n    \
-         }\n  ]\n}\n",
+         \"rung\": {\n      \"comment\": \"\",\n      \"nodes\": [],\n      \"edges\": []\n    \
+         }\n}\n",
     )
     .unwrap();
     one_error(
         &ld,
-        "main.ld:6:1: error[E1073]: an OpenPLC Editor v4 graphical body",
+        "main.fbd:6:1: error[E1073]: an OpenPLC Editor v4 graphical body",
     );
     let out = ladderc()
         .args(["--message-format", "short", "check"])

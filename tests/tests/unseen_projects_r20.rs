@@ -384,12 +384,13 @@ fn an_openplc_editor_v4_project_folder_runs() {
     );
 
     // a graphical POU of the folder (declarations, JSON, then `END_PROGRAM`, as yaseralie's
-    // `main.ld`): one E1073 at the JSON (before: 7,649 errors, one per JSON line)
+    // `main.ld`): one E1073 at the JSON (before: 7,649 errors, one per JSON line); since round
+    // 24 an FBD body (`"rung": {...}`), a ladder body's rungs being read (openplc_v4_ld_run.rs)
     std::fs::remove_file(root.join("pous/programs/main.st")).unwrap();
     std::fs::write(
-        root.join("pous/programs/main.ld"),
+        root.join("pous/programs/main.fbd"),
         "PROGRAM main\nVAR\n\tLED1 : bool AT %QX100.0;\nEND_VAR\n\n{\n  \"name\": \"main\",\n  \
-         \"rungs\": [\n    {\n      \"id\": \"rung_1\",\n      \"nodes\": []\n    }\n  ]\n}\nEND_PROGRAM",
+         \"rung\": {\n      \"comment\": \"\",\n      \"nodes\": []\n  }\n}\nEND_PROGRAM",
     )
     .unwrap();
     let out = common::ladderc()
@@ -410,7 +411,7 @@ fn an_openplc_editor_v4_project_folder_runs() {
     assert!(
         errors
             .iter()
-            .any(|e| e.contains("main.ld:6:1: error[E1073]")),
+            .any(|e| e.contains("main.fbd:6:1: error[E1073]")),
         "{stderr}"
     );
     // (no note that the file was "read as IL": it was not read)

@@ -4,8 +4,8 @@
 //!
 //! Input: the command line's paths and the [`Session`] (its overlay, and the file system when
 //! allowed). Output: the paths with each such folder replaced by its POU files (sorted, at most
-//! [`MAX_FILES`], at most [`MAX_DEPTH`] folders down; a `.ld`/`.fbd` JSON body among them is one
-//! E1073 as when given alone), and the configuration that `project.json` describes (its tasks,
+//! [`MAX_FILES`], at most [`MAX_DEPTH`] folders down; a `.ld` among them is read as when given
+//! alone (`crate::openplc_v4_ld`), an `.fbd` JSON body is one E1073), and the configuration that `project.json` describes (its tasks,
 //! program instances and global variables) written as Structured Text, one [`V4Config`] per folder.
 //! Invariants: never panics; nothing from `project.json` reaches the text unless it is a name, a
 //! duration, an integer, a direct address or a literal of a closed set of characters (anything

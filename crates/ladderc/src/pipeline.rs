@@ -559,9 +559,24 @@ impl Session {
                     Some(stem) if is_iec_identifier(stem) => stem,
                     _ => il_frontend::DEFAULT_IMPLICIT_PROGRAM,
                 };
+                // OpenPLC Editor v4's `.ld` POU: declarations, then the rungs as JSON, read as ST
+                let ld_text = match openplc_v4_json_body(src)
+                    .and_then(|at| crate::openplc_v4_ld::read(file, src, at))
+                {
+                    Some(Ok(text)) => Some(text),
+                    Some(Err(d)) => {
+                        self.diags.push(*d);
+                        continue;
+                    }
+                    None => None,
+                };
+                let (file_lang, src) = match &ld_text {
+                    Some(text) => (Lang::St, text.as_str()),
+                    None => (file_lang, src),
+                };
                 if let Some(at) = openplc_v4_json_body(src) {
-                    // OpenPLC Editor v4's `.ld` / `.fbd` POU: declarations, then the graphics as
-                    // JSON (each of its lines would be an error of the text's language)
+                    // OpenPLC Editor v4's `.fbd` POU: declarations, then the graphics as JSON
+                    // (each of its lines would be an error of the text's language)
                     self.diags.push(
                         Diagnostic::error(
                             code::E1073,
@@ -595,7 +610,8 @@ impl Session {
                         text: v2_text
                             .clone()
                             .or_else(|| tc_text.clone())
-                            .or_else(|| v23_text.clone()),
+                            .or_else(|| v23_text.clone())
+                            .or_else(|| ld_text.clone()),
                         own: il_frontend::parser::integer_constants(&unit, &local, true),
                         diags: local,
                     });
@@ -1537,28 +1553,45 @@ fn uses_library_blocks(units: &[CompilationUnit], lib: &Library) -> bool {
 }
 
 /// Where the JSON body of an OpenPLC Editor v4 graphical POU (`main.ld`: `PROGRAM main VAR ...
-/// END_VAR` then `{ "name": ..., "rungs": [...] }`) starts: the `{` of a text that, after its
-/// last `END_VAR` line, holds only a JSON object with a `"rungs"`, `"nodes"` or `"blocks"` member.
+/// END_VAR` then `{ "name": ..., "rungs": [...] }`) starts: the `{` of a text that, after an
+/// `END_VAR` line, holds only a JSON object with a `"rungs"`, `"nodes"` or `"blocks"` member (the
+/// first such place whose JSON is well-formed, as the JSON may hold `END_VAR` in its texts; else the
+/// last, so that a body cut short is still one).
 fn openplc_v4_json_body(src: &str) -> Option<usize> {
     let upper = src.to_ascii_uppercase();
-    let end_var = upper.rfind("END_VAR")? + "END_VAR".len();
-    let rest = &src[end_var..];
-    let start = end_var + (rest.len() - rest.trim_start().len());
-    let mut body = src[start..].trim_end();
-    // the editor closes the POU after the JSON (`}` then `END_PROGRAM`)
-    for end in ["END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION"] {
-        let cut = body.len().saturating_sub(end.len());
-        if body.get(cut..).is_some_and(|t| t.eq_ignore_ascii_case(end)) {
-            body = body[..cut].trim_end();
-            break;
+    let (mut last, mut tries) = (None, 0);
+    for (k, _) in upper.match_indices("END_VAR") {
+        let end_var = k + "END_VAR".len();
+        let rest = &src[end_var..];
+        let start = end_var + (rest.len() - rest.trim_start().len());
+        if !src[start..].starts_with('{') {
+            continue;
         }
+        let mut body = src[start..].trim_end();
+        // the editor closes the POU after the JSON (`}` then `END_PROGRAM`)
+        for end in ["END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION"] {
+            let cut = body.len().saturating_sub(end.len());
+            if body.get(cut..).is_some_and(|t| t.eq_ignore_ascii_case(end)) {
+                body = body[..cut].trim_end();
+                break;
+            }
+        }
+        // (a ladder body cut short is still one: its reader says where it stops)
+        let json = (body.ends_with('}') || body.contains("\"rungs\""))
+            && ["\"rungs\"", "\"nodes\"", "\"blocks\""]
+                .iter()
+                .any(|k| body.contains(k));
+        if !json {
+            continue;
+        }
+        // (a few tries: a hostile text may hold many)
+        tries += 1;
+        if tries <= 8 && serde_json::from_str::<serde::de::IgnoredAny>(body).is_ok() {
+            return Some(start);
+        }
+        last = Some(start);
     }
-    let json = body.starts_with('{')
-        && body.ends_with('}')
-        && ["\"rungs\"", "\"nodes\"", "\"blocks\""]
-            .iter()
-            .any(|k| body.contains(k));
-    json.then_some(start)
+    last
 }
 
 fn is_iec_identifier(s: &str) -> bool {
