@@ -1,0 +1,159 @@
+//! TwinCAT 3 SFC bodies (issue #13, round 24): a `.TcPOU` whose body is `<SFC>` (CODESYS's
+//! serialized `SFCImplementationObject` archive: `SFCSegment`, `SFCStep`, `SFCTransition`,
+//! `SFCBranch`, `SFCJump`, `SFCMacro`, their attributes keyed by GUID) is read as textual SFC
+//! (`crates/ladder-compiler/src/twincat_sfc.rs`) and run by the SFC lowering of PLCopen XML and
+//! textual charts, end to end through `ladderc run` (before: one E0321 per POU, "the body ... is in
+//! SFC, which ladderc cannot read in a TwinCAT source file"):
+//! - steps, the initial step, a transition by ST expression and one by a `<Transition>` object, an
+//!   alternative branch (two sequences, left first), jumps, CODESYS's entry / step / exit actions
+//!   of a step (`<Action>` children of the POU), IEC associations (N, S) and the SFC settings' flags
+//!   (SFCReset), checked scan by scan;
+//! - what the archive holds that ladderc cannot map exactly (an attribute it does not know set to
+//!   a value, a timed qualifier whose duration it cannot find) is one located E0321 naming it.
+//!
+//! The fixture `fixtures/twincat_sfc/MAIN.TcPOU` is written for these tests (README there), in the
+//! layout of the public projects read (TimKers/TwincatTest: ten SFC charts, 3.1.4024). Record of
+//! that project's 12 `.TcPOU` files with an SFC chart (`ladderc check PLC/PLC.plcproj`): before, 12
+//! E0321; now the 8 charts of POU bodies check clean (FB_EnclosureConditioningSFC,
+//! FB_PowerModeConditioningSFC, FB_DehumidifySFC, FB_BatteryConditioningSFC, FB_HeatpumpOperation,
+//! FB_HeatpumpInit, FB_HeatPumpSystem with its macro, UpdateSFC; W3402 for their SFCTip and
+//! SFCCurrentStep flags), and the 4 charts that are the body of an ACTION (FB_BMS.BMSSFC,
+//! FB_Janitza.ReadDataSFC, FB_Teltonika.ReadDataSFC, old.BMSInit) stay one E0321 each.
+
+mod common;
+use common::{check_text, ladderc};
+
+use std::path::{Path, PathBuf};
+
+fn fixture() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/fixtures/twincat_sfc/MAIN.TcPOU")
+}
+
+const WATCH: &str = "MAIN.nLevel,MAIN.nIdle,MAIN.nEntry,MAIN.nFill,MAIN.nExit,MAIN.nLamp,\
+                     MAIN.bLamp,MAIN.__sfc_X_Idle,MAIN.__sfc_X_Fill,MAIN.__sfc_X_Drain";
+
+/// `ladderc run MAIN.TcPOU` for `cycles` scans of 10 ms with `stimulus`: the trace's rows, each
+/// the watched values in [`WATCH`] order.
+fn run(stimulus: &str, cycles: u32) -> Vec<Vec<i64>> {
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, format!("cycle,variable,value\n{stimulus}")).unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(fixture())
+        .args([
+            "--cycles",
+            &cycles.to_string(),
+            "--cycle-ms",
+            "10",
+            "--stimulus",
+        ])
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", WATCH])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .skip(1)
+        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+        .map(|l| {
+            l.split(',')
+                .skip(2)
+                .map(|v| v.parse::<i64>().unwrap())
+                .collect()
+        })
+        .collect()
+}
+
+/// Idle (initial, `aIdle` N) -> `bStart` -> Fill (entry `aFillEntry`, step action `aFill`: +10,
+/// exit `aFillExit`) -> the branch's left sequence, the `<Transition>` object `T_Full`
+/// (`nLevel >= 50`) -> Drain (step action `aDrain`: -20, `aLamp` S) -> `nLevel <= 0;` -> the jump
+/// back to Idle. Each scan evaluates the transitions on the steps active at its start, then runs
+/// the actions: the entry and step actions in the scan the step becomes active, the exit action
+/// (not the step action) in the scan it is left, N once more after its step is left, S on after.
+#[test]
+fn a_twincat_chart_runs_its_steps_transitions_branch_jump_and_step_actions() {
+    let rows = run("2,MAIN.bStart,1\n3,MAIN.bStart,0\n", 12);
+    // nLevel, nIdle, nEntry, nFill, nExit, nLamp, bLamp, Idle.X, Fill.X, Drain.X
+    let expected: [[i64; 10]; 12] = [
+        [0, 1, 0, 0, 0, 0, 0, 1, 0, 0],
+        [0, 2, 0, 0, 0, 0, 0, 1, 0, 0],
+        // bStart: Fill's entry and step action in the same scan; aIdle's final scan
+        [10, 3, 1, 1, 0, 0, 0, 0, 1, 0],
+        [20, 3, 1, 2, 0, 0, 0, 0, 1, 0],
+        [30, 3, 1, 3, 0, 0, 0, 0, 1, 0],
+        [40, 3, 1, 4, 0, 0, 0, 0, 1, 0],
+        [50, 3, 1, 5, 0, 0, 0, 0, 1, 0],
+        // T_Full (50 >= 50): Fill's exit action, not its step action; Drain's step action, aLamp set
+        [30, 3, 1, 5, 1, 1, 1, 0, 0, 1],
+        [10, 3, 1, 5, 1, 2, 1, 0, 0, 1],
+        [-10, 3, 1, 5, 1, 3, 1, 0, 0, 1],
+        // nLevel <= 0: the jump to Idle; aLamp stays set
+        [-10, 4, 1, 5, 1, 4, 1, 1, 0, 0],
+        [-10, 5, 1, 5, 1, 5, 1, 1, 0, 0],
+    ];
+    assert_eq!(rows.len(), expected.len());
+    for (k, (row, want)) in rows.iter().zip(expected.iter()).enumerate() {
+        assert_eq!(row.as_slice(), want.as_slice(), "scan {k}");
+    }
+}
+
+/// The branch's right sequence: `bAbort` in Fill runs Fill's exit action and jumps to Idle (the
+/// left sequence's `T_Full` is FALSE, so it has no say); a second start enters Fill again (its
+/// entry action again). The POU's SFC settings enable SFCReset: TRUE resets the chart to Idle and
+/// the stored action `aLamp` (one final scan, as IEC's action control gives).
+#[test]
+fn the_other_sequence_of_the_branch_jumps_back_and_sfc_reset_resets_the_chart() {
+    let stim = "2,MAIN.bStart,1\n3,MAIN.bStart,0\n4,MAIN.bAbort,1\n5,MAIN.bAbort,0\n\
+                6,MAIN.bStart,1\n7,MAIN.bStart,0\n14,MAIN.SFCReset,1\n15,MAIN.SFCReset,0\n";
+    let rows = run(stim, 17);
+    let col = |k: usize| rows.iter().map(|r| r[k]).collect::<Vec<_>>();
+    // Fill.X: scans 2-3 (aborted at 4), then 6-8
+    assert_eq!(col(8), [0, 0, 1, 1, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0]);
+    // nEntry: each entry into Fill; nExit: each exit (the abort, then T_Full)
+    assert_eq!(col(2)[3..10], [1, 1, 1, 2, 2, 2, 2]);
+    assert_eq!(col(4)[3..10], [0, 1, 1, 1, 1, 1, 2]);
+    // nLevel: +10 in Fill (kept over the abort), -20 in Drain from scan 9
+    assert_eq!(
+        col(0)[..12],
+        [0, 0, 10, 20, 20, 20, 30, 40, 50, 30, 10, -10]
+    );
+    // aLamp (S) runs from scan 9 until SFCReset at scan 14 (its final scan), then never again
+    assert_eq!(col(5)[12..], [4, 5, 6, 6, 6]);
+    assert_eq!(col(7)[14..], [1, 1, 1], "SFCReset: the initial step");
+}
+
+/// What ladderc cannot map exactly is one located E0321 naming it, never a guess: a timed
+/// qualifier (the archive's duration attribute is not known), an attribute ladderc does not know
+/// that is not at its default value.
+#[test]
+fn what_the_archive_holds_that_ladderc_cannot_map_is_one_located_error() {
+    let src = std::fs::read_to_string(fixture()).unwrap();
+    let timed = src.replacen("<v n=\"Value\">\"S\"</v>", "<v n=\"Value\">\"L\"</v>", 1);
+    assert_ne!(timed, src);
+    let (code, lines) = check_text("MAIN.TcPOU", &timed);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("error[E0321]")
+            && lines[0].contains("qualifier `L`")
+            && lines[0].contains("MAIN.TcPOU:"),
+        "{lines:?}"
+    );
+    let unknown = src.replacen(
+        "{6844a48e-46c2-4cc8-a185-a478f3b99cc0}",
+        "{0badf00d-46c2-4cc8-a185-a478f3b99cc0}",
+        1,
+    );
+    let (code, lines) = check_text("MAIN.TcPOU", &unknown);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("error[E0321]")
+            && lines[0].contains("{0badf00d-46c2-4cc8-a185-a478f3b99cc0}")
+            && lines[0].contains("`TRUE`"),
+        "{lines:?}"
+    );
+}
