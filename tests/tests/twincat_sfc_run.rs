@@ -126,8 +126,10 @@ fn the_other_sequence_of_the_branch_jumps_back_and_sfc_reset_resets_the_chart() 
 }
 
 /// What ladderc cannot map exactly is one located E0321 naming it, never a guess: a timed
-/// qualifier (the archive's duration attribute is not known), an attribute ladderc does not know
-/// that is not at its default value.
+/// qualifier (the archive's duration attribute is not known), a parallel branch (the branch's
+/// `Parallel` attribute, named by the archive's own table of attributes), a table that names an
+/// attribute otherwise than ladderc reads it, an attribute ladderc does not know that is not at
+/// its default value.
 #[test]
 fn what_the_archive_holds_that_ladderc_cannot_map_is_one_located_error() {
     let src = std::fs::read_to_string(fixture()).unwrap();
@@ -140,6 +142,33 @@ fn what_the_archive_holds_that_ladderc_cannot_map_is_one_located_error() {
         lines[0].contains("error[E0321]")
             && lines[0].contains("qualifier `L`")
             && lines[0].contains("MAIN.TcPOU:"),
+        "{lines:?}"
+    );
+    let parallel = src.replacen(
+        "<o t=\"SFCBranch\">\n",
+        "<o t=\"SFCBranch\">\n<l2 n=\"Attributes\" cet=\"SFCAttribute\"><o>\
+         <v n=\"AttributeId\">{23bdaa98-72ec-41f7-817b-9dede5697086}</v><o n=\"Value\" \
+         t=\"BoolValue\"><v n=\"Value\">\"TRUE\"</v><v n=\"DefaultValue\">\"FALSE\"</v></o>\
+         </o></l2>\n",
+        1,
+    );
+    assert_ne!(parallel, src);
+    let (code, lines) = check_text("MAIN.TcPOU", &parallel);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("error[E0321]")
+            && lines[0].contains("attribute `Parallel`")
+            && lines[0].contains("a parallel branch"),
+        "{lines:?}"
+    );
+    // the archive's own table of attribute names must name each attribute as ladderc reads it
+    let renamed = src.replacen("\"MainAction\"", "\"EntryAction\"", 1);
+    assert_ne!(renamed, src);
+    let (code, lines) = check_text("MAIN.TcPOU", &renamed);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines.len() == 1 && lines[0].contains("which ladderc reads as `MainAction`"),
         "{lines:?}"
     );
     let unknown = src.replacen(

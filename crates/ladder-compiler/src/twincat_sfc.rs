@@ -15,8 +15,13 @@
 //! - `a6b08bd8-...`, `700a583f-...`, `a2621e18-...`: a step's entry, step (main) and exit action
 //!   (CODESYS's step actions, written `__ENTRY`/`__ACTIVE`/`__EXIT`, see
 //!   `il_frontend::st::sfc::VENDOR_QUALIFIERS`); `e174fc0d-...`: an IEC association's qualifier;
+//! - `23bdaa98-...`: a branch is parallel (TRUE: not read);
 //! - a segment is a sequence; a branch holds segments side by side: an alternative branch when
 //!   each segment begins with a transition (after a step); a macro is its segment, in place.
+//!
+//! The archive carries its own table of attribute names (`SFCAttributeDescription`: GUID ->
+//! `Identifier`, `MainAction`, `InitStep` ...): each GUID above must have the name ladderc reads it
+//! as, and an attribute ladderc does not read is named by it in the error.
 //!
 //! Invariants: never guesses: any other attribute whose value is not its default, an embedded
 //! (unnamed) action or transition, a parallel branch, a timed qualifier (its duration's attribute
@@ -35,6 +40,7 @@ const ENTRY: &str = "a6b08bd8-b696-47e3-9cbf-7408b61c9ff8";
 const ACTIVE: &str = "700a583f-b4d4-43e4-8c14-629c7cd3bec8";
 const EXIT: &str = "a2621e18-7de3-4ea6-ae6d-89e9e0b7befd";
 const QUALIFIER: &str = "e174fc0d-80b0-4a9e-a530-ca239c249a50";
+const PARALLEL: &str = "23bdaa98-72ec-41f7-817b-9dede5697086";
 
 /// One attribute of an archive object: its GUID, value and default (unquoted), and the offset of
 /// its `Value`.
@@ -80,6 +86,8 @@ enum Open {
 struct Reader<'t> {
     file: FileId,
     what: &'t str,
+    /// The archive's own table of attribute names (`SFCAttributeDescription`: GUID -> identifier).
+    names: Vec<(String, String)>,
     /// The POU's `<Transition>` objects: name and ST text.
     objects: &'t [(String, String)],
     steps: Vec<StepOut>,
@@ -119,9 +127,35 @@ pub(crate) fn lower(
             format!("the SFC body of `{what}` has no root segment"),
         ));
     };
+    let names = descriptions(sfc);
+    // the archive's table names the attributes ladderc reads as it reads them, or it is not read
+    for (guid, meaning) in [
+        (NAME, "Name"),
+        (COMMENT, "Comment"),
+        (INITIAL, "InitStep"),
+        (ENTRY, "EntryAction"),
+        (ACTIVE, "MainAction"),
+        (EXIT, "ExitAction"),
+        (QUALIFIER, "Qualifier"),
+        (PARALLEL, "Parallel"),
+    ] {
+        if let Some((_, id)) = names.iter().find(|(g, _)| g == guid) {
+            if !id.eq_ignore_ascii_case(meaning) {
+                return Err(fail(
+                    file,
+                    root,
+                    format!(
+                        "the archive of `{what}` names attribute {{{guid}}} `{id}`, which ladderc \
+                         reads as `{meaning}`"
+                    ),
+                ));
+            }
+        }
+    }
     let mut r = Reader {
         file,
         what,
+        names,
         objects,
         steps: Vec::new(),
         trans: Vec::new(),
@@ -362,6 +396,42 @@ fn attributes(o: &Element) -> Vec<Attr> {
     out
 }
 
+/// The archive's table of attribute descriptions (`<d2 n="Attributes" cvt="SFCAttributeDescription">`:
+/// a GUID, then its description with its `Identifier`), lower-case GUID and identifier.
+fn descriptions(sfc: &Element) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for d in sfc
+        .walk()
+        .filter(|e| e.name() == "d2" && e.attr("cvt") == Some("SFCAttributeDescription"))
+    {
+        let mut guid: Option<String> = None;
+        for c in d.children.iter() {
+            match c.name() {
+                "v" => {
+                    guid = Some(
+                        c.text_ref()
+                            .trim()
+                            .trim_matches(['{', '}'])
+                            .to_ascii_lowercase(),
+                    )
+                }
+                "o" => {
+                    let id = c
+                        .children
+                        .iter()
+                        .find(|v| v.name() == "v" && v.attr("n") == Some("Identifier"))
+                        .map(|v| unquote(&v.text_ref()));
+                    if let (Some(g), Some(id)) = (guid.take(), id) {
+                        out.push((g, id));
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
 /// The element list of an object (`<o n="ElementList"><l2 n="InnerList">` children), each with its
 /// type: its own `t`, else the list's element type `cet` (the archive leaves out the `t` of an
 /// element of the list's one type).
@@ -399,10 +469,20 @@ impl Reader<'_> {
         let attrs = attributes(o);
         for a in &attrs {
             if a.guid != COMMENT && !known.contains(&a.guid.as_str()) && a.value != a.default {
+                let named = self
+                    .names
+                    .iter()
+                    .find(|(g, _)| *g == a.guid)
+                    .map_or(String::new(), |(_, n)| format!("`{n}` "));
+                let what = if a.guid == PARALLEL {
+                    "a parallel branch, which ladderc does not read in a TwinCAT chart".to_string()
+                } else {
+                    "which ladderc does not read".to_string()
+                };
                 return Err(self.err(
                     a.at,
                     format!(
-                        "the {kind} has attribute {{{}}} set to `{}`, which ladderc does not know",
+                        "the {kind} has attribute {named}{{{}}} set to `{}`: {what}",
                         a.guid, a.value
                     ),
                     "clear that setting of the element in TwinCAT, or export the POU as PLCopen XML",
