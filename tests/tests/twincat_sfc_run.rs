@@ -9,7 +9,10 @@
 //!   of a step (`<Action>` children of the POU), IEC associations (N, S) and the SFC settings' flags
 //!   (SFCReset), checked scan by scan;
 //! - what the archive holds that ladderc cannot map exactly (an attribute it does not know set to
-//!   a value, a timed qualifier whose duration it cannot find) is one located E0321 naming it.
+//!   a value, a parallel branch, a timed qualifier whose duration it cannot find) is one located
+//!   E0321 naming it;
+//! - in an `.st` file too, a textual chart runs the actions of the `ACTIONS` block after its POU
+//!   (before: E0304 at the block, E3122 at each association).
 //!
 //! The fixture `fixtures/twincat_sfc/MAIN.TcPOU` is written for these tests (README there), in the
 //! layout of the public projects read (TimKers/TwincatTest: ten SFC charts, 3.1.4024). Record of
@@ -184,5 +187,59 @@ fn what_the_archive_holds_that_ladderc_cannot_map_is_one_located_error() {
             && lines[0].contains("{0badf00d-46c2-4cc8-a185-a478f3b99cc0}")
             && lines[0].contains("`TRUE`"),
         "{lines:?}"
+    );
+}
+
+/// The same reading in an `.st` file: a textual chart's association may name an action of the
+/// `ACTIONS` block after its POU (CODESYS's text form; before: E0304 "an ACTIONS block is
+/// supported only right after a POU whose body is ST", and E3122 at the association); the chart
+/// calls it while its step is active (N: once more after).
+#[test]
+fn a_textual_chart_runs_the_actions_of_the_actions_block_after_its_pou() {
+    let src = "PROGRAM main
+VAR
+  go : BOOL;
+  n, m : INT;
+END_VAR
+INITIAL_STEP Wait: Count(N); END_STEP
+TRANSITION FROM Wait TO Work := go; END_TRANSITION
+STEP Work: Twice(N); END_STEP
+TRANSITION FROM Work TO Wait := m >= 6; END_TRANSITION
+END_PROGRAM
+ACTIONS
+ACTION Count:
+  n := n + 1;
+END_ACTION
+ACTION Twice:
+  m := m + 2;
+END_ACTION
+END_ACTIONS
+";
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("chart.st");
+    std::fs::write(&file, src).unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(&stim, "cycle,variable,value\n2,main.go,1\n3,main.go,0\n").unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&file)
+        .args(["--cycles", "8", "--cycle-ms", "10", "--stimulus"])
+        .arg(&stim)
+        .args(["--trace", "-", "--watch", "main.n,main.m"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let rows: Vec<String> = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').skip(2).collect::<Vec<_>>().join(","))
+        .collect();
+    // n counts Wait's scans (and its final scan at 2); m += 2 per Work scan (2, 3, 4), then once
+    // more (the final scan at 5), Wait again from 5
+    assert_eq!(
+        rows,
+        ["1,0", "2,0", "3,2", "3,4", "3,6", "4,8", "5,8", "6,8"],
+        "{stderr}"
     );
 }
