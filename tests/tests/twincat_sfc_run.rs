@@ -11,6 +11,8 @@
 //! - what the archive holds that ladderc cannot map exactly (an attribute it does not know set to
 //!   a value, a parallel branch, a timed qualifier whose duration it cannot find) is one located
 //!   E0321 naming it;
+//! - an alternative branch whose sequences end with steps, one transition under it (CODESYS's
+//!   form; before: E0321 for the whole body);
 //! - in an `.st` file too, a textual chart runs the actions of the `ACTIONS` block after its POU
 //!   (before: E0304 at the block, E3122 at each association).
 //!
@@ -241,5 +243,60 @@ END_ACTIONS
         rows,
         ["1,0", "2,0", "3,2", "3,4", "3,6", "4,8", "5,8", "6,8"],
         "{stderr}"
+    );
+}
+
+/// An alternative branch whose sequences end with steps (CODESYS draws one transition under the
+/// branch; fixture `P_Merge.TcPOU`): the transition after the branch leaves whichever of them is
+/// active, as the PLCopen XML reader merges CODESYS's branches (before: E0321 for the whole body).
+#[test]
+fn an_alternative_branch_of_sequences_ending_in_steps_has_one_transition_after_it() {
+    let file = fixture().with_file_name("P_Merge.TcPOU");
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n1,P_Merge.bGo,1\n2,P_Merge.bGo,0\n3,P_Merge.bDone,1\n\
+         4,P_Merge.bDone,0\n5,P_Merge.bGo,1\n5,P_Merge.bLeft,1\n6,P_Merge.bGo,0\n8,P_Merge.bDone,1\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .args(["--message-format", "short", "run"])
+        .arg(&file)
+        .args(["--cycles", "10", "--cycle-ms", "10", "--stimulus"])
+        .arg(&stim)
+        .args([
+            "--trace",
+            "-",
+            "--watch",
+            "P_Merge.nLeft,P_Merge.nRight,P_Merge.__sfc_X_Wait,P_Merge.__sfc_X_Left,\
+             P_Merge.__sfc_X_Right",
+        ])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{stderr}");
+    let rows: Vec<String> = String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .skip(1)
+        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+        .map(|l| l.split(',').skip(2).collect::<Vec<_>>().join(","))
+        .collect();
+    // nLeft, nRight, Wait.X, Left.X, Right.X: the right sequence first (bLeft FALSE), bDone leaves
+    // Right; then the left one, bDone leaves Left
+    assert_eq!(
+        rows,
+        [
+            "0,0,1,0,0",
+            "0,0,0,0,0",
+            "0,1,0,0,1",
+            "0,1,1,0,0",
+            "0,1,1,0,0",
+            "0,1,0,0,0",
+            "1,1,0,1,0",
+            "2,1,0,1,0",
+            "2,1,1,0,0",
+            "2,1,1,0,0"
+        ]
     );
 }

@@ -17,7 +17,8 @@
 //!   `il_frontend::st::sfc::VENDOR_QUALIFIERS`); `e174fc0d-...`: an IEC association's qualifier;
 //! - `23bdaa98-...`: a branch is parallel (TRUE: not read);
 //! - a segment is a sequence; a branch holds segments side by side: an alternative branch when
-//!   each segment begins with a transition (after a step); a macro is its segment, in place.
+//!   each segment begins with a transition (after a step); sequences that end with steps share
+//!   the transition after the branch (one per step); a macro is its segment, in place.
 //!
 //! The archive carries its own table of attribute names (`SFCAttributeDescription`: GUID ->
 //! `Identifier`, `MainAction`, `InitStep` ...): each GUID above must have the name ladderc reads it
@@ -75,8 +76,9 @@ struct TransOut {
 enum Open {
     /// At the start of the chart: nothing before.
     Start,
-    /// After a step: the next transition leaves it.
-    Step(usize),
+    /// After a step, or after the steps that end the sequences of an alternative branch: the next
+    /// transition leaves them (one transition per step, as CODESYS merges them).
+    Steps(Vec<usize>),
     /// After transitions (of one or more branches): the next step is where they lead.
     Trans(Vec<usize>),
     /// After a jump: the sequence ends.
@@ -606,12 +608,12 @@ impl Reader<'_> {
                         ))
                     }
                 }
-                Ok(Open::Step(k))
+                Ok(Open::Steps(vec![k]))
             }
             "SFCTransition" => {
                 let attrs = self.known_attributes(o, "transition", &[NAME])?;
                 self.no_embedded(o, "transition")?;
-                let Open::Step(from) = open else {
+                let Open::Steps(from) = open else {
                     return Err(self.err(
                         at,
                         "a transition that does not follow a step (a parallel branch or two transitions \
@@ -626,14 +628,18 @@ impl Reader<'_> {
                     .map(|a| (a.value.clone(), a.at))
                     .unwrap_or((String::new(), at));
                 let cond = self.condition(&text, cat)?;
-                self.trans.push(TransOut {
-                    from,
-                    to: None,
-                    jump: None,
-                    cond,
-                    at,
-                });
-                Ok(Open::Trans(vec![self.trans.len() - 1]))
+                let mut out = Vec::new();
+                for from in from {
+                    self.trans.push(TransOut {
+                        from,
+                        to: None,
+                        jump: None,
+                        cond: cond.clone(),
+                        at,
+                    });
+                    out.push(self.trans.len() - 1);
+                }
+                Ok(Open::Trans(out))
             }
             "SFCJump" => {
                 let attrs = self.known_attributes(o, "jump", &[NAME])?;
@@ -669,7 +675,7 @@ impl Reader<'_> {
             "SFCBranch" => {
                 self.known_attributes(o, "branch", &[NAME])?;
                 let segments = inner(o);
-                let Open::Step(_) = open else {
+                let Open::Steps(ref before) = open else {
                     return Err(self.err(
                         at,
                         "a parallel branch (a branch after a transition), which ladderc does not \
@@ -678,7 +684,17 @@ impl Reader<'_> {
                         "export the POU as PLCopen XML: ladderc reads parallel branches there",
                     ));
                 };
+                if before.len() != 1 {
+                    return Err(self.err(
+                        at,
+                        "a branch right after the steps that end another branch".into(),
+                        "put a transition and a step between the two branches",
+                    ));
+                }
+                // the sequences end with transitions (the branch's convergence is their common
+                // next step), jumps, or steps (the transition after the branch leaves each)
                 let mut after = Vec::new();
+                let mut ends = Vec::new();
                 for (seg, _) in segments {
                     let first = inner(seg).first().map_or("", |e| e.1);
                     if first != "SFCTransition" {
@@ -694,21 +710,22 @@ impl Reader<'_> {
                     }
                     match self.segment(seg, open.clone())? {
                         Open::Trans(ts) => after.extend(ts),
-                        Open::Closed => {}
-                        _ => return Err(self.err(
-                            seg.tag_start(),
-                            "a sequence of an alternative branch that ends with a step (it must \
-                                 end with a transition or a jump)"
-                                .into(),
-                            "end the sequence with a transition",
-                        )),
+                        Open::Steps(ss) => ends.extend(ss),
+                        _ => {}
                     }
                 }
-                Ok(if after.is_empty() {
-                    Open::Closed
-                } else {
-                    Open::Trans(after)
-                })
+                match (after.is_empty(), ends.is_empty()) {
+                    (true, true) => Ok(Open::Closed),
+                    (false, true) => Ok(Open::Trans(after)),
+                    (true, false) => Ok(Open::Steps(ends)),
+                    (false, false) => Err(self.err(
+                        at,
+                        "an alternative branch some of whose sequences end with a step and others \
+                         with a transition"
+                            .into(),
+                        "end every sequence of the branch alike",
+                    )),
+                }
             }
             other => Err(self.err(
                 at,
