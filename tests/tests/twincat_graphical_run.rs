@@ -362,6 +362,8 @@ fn a_cfc_feedback_loop_is_one_located_error() {
     assert!(text.lines().nth(16).unwrap().contains("CFCBoxElement"));
 }
 
+/// An SFC chart that is the body of an ACTION stays one located E0321 (a POU's SFC body is read
+/// since round 24: `twincat_sfc_run.rs`); a POU's SFC body without its archive is one E0321 too.
 #[test]
 fn an_sfc_body_stays_one_located_e0321() {
     let dir = tempfile::tempdir().unwrap();
@@ -370,16 +372,30 @@ fn an_sfc_body_stays_one_located_e0321() {
         &path,
         "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
          <POU Name=\"P_Sfc\">\n    <Declaration><![CDATA[PROGRAM P_Sfc\nVAR x : BOOL; END_VAR\n]]>\
-         </Declaration>\n    <Implementation>\n      <SFC>\n        <XmlArchive />\n      </SFC>\n    \
-         </Implementation>\n  </POU>\n</TcPlcObject>\n",
+         </Declaration>\n    <Implementation>\n      <ST><![CDATA[x := TRUE;]]></ST>\n    \
+         </Implementation>\n    <Action Name=\"A\">\n    <Implementation>\n      <SFC>\n        \
+         <XmlArchive />\n      </SFC>\n    </Implementation>\n    </Action>\n  </POU>\n</TcPlcObject>\n",
     )
     .unwrap();
     let (code, heads) = check(&path);
     assert_eq!(code, Some(1));
     assert_eq!(
         heads,
-        ["P_Sfc.TcPOU:8:7: error[E0321]: TwinCAT object file: the body of `P_Sfc` is in SFC, which \
+        ["P_Sfc.TcPOU:12:7: error[E0321]: TwinCAT object file: the body of `P_Sfc.A` is in SFC, which \
           ladderc cannot read in a TwinCAT source file (it reads ST, LD/FBD and CFC bodies)"]
+    );
+    let pou = "<?xml version=\"1.0\"?>\n<TcPlcObject>\n<POU Name=\"P_Sfc\"><Declaration><![CDATA[\
+               PROGRAM P_Sfc]]></Declaration>\n<Implementation>\n<SFC><XmlArchive /></SFC>\
+               </Implementation></POU></TcPlcObject>\n";
+    std::fs::write(&path, pou).unwrap();
+    let (code, heads) = check(&path);
+    assert_eq!(code, Some(1));
+    assert_eq!(
+        heads,
+        [
+            "P_Sfc.TcPOU:5:1: error[E0321]: TwinCAT SFC body: the SFC body of `P_Sfc` holds no \
+          SFCImplementationObject archive"
+        ]
     );
 }
 

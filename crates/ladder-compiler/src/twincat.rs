@@ -11,16 +11,18 @@
 //! `END_INTERFACE` (after an interface's `<Method>` declarations, each closed by `END_METHOD`) written into blank places of the markup after the texts they close; for a GVL also
 //! its name (its members are reachable qualified, `GVL.x`); for a task (`.TcTTO`) its name, cycle
 //! time, priority and the programs it calls. A body in LD or FBD (TwinCAT's network list `<NWL>`)
-//! is read as ST by `twincat_nwl`, a body in CFC by `twincat_cfc`, their tokens
+//! is read as ST by `twincat_nwl`, a body in CFC by `twincat_cfc`, a POU's body in SFC as
+//! textual SFC by `twincat_sfc` (its `<Transition>` children the conditions it names), their tokens
 //! written into the blank markup of their own elements (so a diagnostic points at the operand's or
-//! box's line), after a VAR block of the temporaries they need. Invariants: never panics; a body in
-//! SFC is one located E0321 naming it, a graphical element not understood one located E0325/E0326,
+//! box's line), after a VAR block of the temporaries they need. Invariants: never panics; an
+//! action's or method's body in SFC is one located E0321 naming it, a graphical element not understood one located E0325/E0326,
 //! an action whose networks need temporaries one E0327 (an action has no declarations); a file whose
 //! root is not `<TcPlcObject>` gives `None`.
 
 use crate::codesys_v2::{local_name, root_name, Source};
 use crate::twincat_cfc;
 use crate::twincat_nwl::{self, NwlBody};
+use crate::twincat_sfc;
 use crate::xml::{self, Element};
 use diagnostics::{code, Diagnostic, FileId, Span};
 
@@ -615,8 +617,9 @@ impl Body<'_, '_> {
     }
 }
 
-/// The body of `el`'s `<Implementation>`: ST, LD/FBD (`<NWL>`, read by [`crate::twincat_nwl`]) or
-/// CFC (`<CFC>`, read by [`crate::twincat_cfc`]); `declares`: whether the body can declare variables
+/// The body of `el`'s `<Implementation>`: ST, LD/FBD (`<NWL>`, read by [`crate::twincat_nwl`]),
+/// CFC (`<CFC>`, read by [`crate::twincat_cfc`]) or, for a POU, SFC (`<SFC>`, read by
+/// [`crate::twincat_sfc`]); `declares`: whether the body can declare variables
 /// (not an action's); `Ok(None)` without one; E0321 for a body in another language.
 fn body_of<'e, 'a>(
     file: FileId,
@@ -645,7 +648,25 @@ fn body_of<'e, 'a>(
             twincat_cfc::lower(file, lang, what)?,
         )));
     }
-    // SFC, IL (TwinCAT's own forms)
+    if lang.name() == "SFC" && declares && el.name() == "POU" {
+        // the POU's transition objects, which the chart's transitions may name
+        let objects: Vec<(String, String)> = el
+            .children_named("Transition")
+            .map(|t| {
+                let st = t
+                    .child("Implementation")
+                    .and_then(|i| i.child("ST"))
+                    .map(|s| s.text())
+                    .unwrap_or_default();
+                (t.attr("Name").unwrap_or("").trim().to_string(), st)
+            })
+            .collect();
+        return Ok(Some(Body::Graph(
+            lang,
+            twincat_sfc::lower(file, lang, what, &objects, el)?,
+        )));
+    }
+    // SFC of an action or method, IL (TwinCAT's own forms)
     let language = lang.name();
     Err(unreadable(
         file,
@@ -820,7 +841,12 @@ VAR n : INT; END_VAR
         };
         assert_eq!(notes.len(), 1);
         assert_eq!(notes[0].code, code::E0321);
-        assert!(notes[0].message.contains("in SFC"), "{}", notes[0].message);
+        assert!(
+            notes[0].message.contains("SFC body")
+                && notes[0].message.contains("SFCImplementationObject"),
+            "{}",
+            notes[0].message
+        );
         assert!(
             text.contains("PROGRAM P") && text.contains("END_PROGRAM"),
             "{text}"

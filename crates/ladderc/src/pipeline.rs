@@ -1400,6 +1400,38 @@ fn lower_textual_sfc(
         .filter(|(_, pb)| pb.sfc)
         .map(|(k, pb)| ((pb.file, pb.name_start), k))
         .collect();
+    // the actions of each chart's POU (and its methods without inputs, TwinCAT's actions before
+    // a method): a chart runs them by `CAL Act`, inlined below as an ST body's own calls are
+    let mut own: std::collections::HashMap<String, Vec<&il_frontend::ast::Action>> =
+        std::collections::HashMap::new();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::Action(a) = item {
+            if a.method_inputs.as_ref().is_none_or(|m| m.is_empty()) {
+                own.entry(a.pou.key()).or_default().push(a);
+            }
+        }
+    }
+    #[allow(clippy::type_complexity)]
+    let own: std::collections::HashMap<
+        String,
+        (
+            std::collections::HashMap<String, Vec<il_frontend::ast::IlStmt>>,
+            Vec<diagnostics::Diagnostic>,
+        ),
+    > = own
+        .into_iter()
+        .map(|(k, acts)| {
+            let map = acts
+                .iter()
+                .map(|a| (a.name.key(), a.body.clone()))
+                .collect();
+            let found = acts
+                .iter()
+                .flat_map(|a| a.diagnostics.iter().cloned())
+                .collect();
+            (k, (map, found))
+        })
+        .collect();
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
         let LibraryElement::Pou(p) = item else {
             continue;
@@ -1424,6 +1456,27 @@ fn lower_textual_sfc(
         if !hidden.is_empty() {
             let span = diagnostics::Span::new(pb.file, pb.base, pb.base);
             p.var_blocks.push(VarBlock::locals(hidden, span));
+        }
+        if let Some((acts, found)) = own.get(&p.name.key()) {
+            let vars: std::collections::HashSet<String> = p
+                .var_blocks
+                .iter()
+                .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+                .collect();
+            let is_var = |n: &str| vars.contains(&n.to_ascii_uppercase());
+            let mut next = 0;
+            p.body = il_frontend::actions::inline_calls(
+                std::mem::take(&mut p.body),
+                acts,
+                &is_var,
+                "__SFCA",
+                &mut next,
+                diags,
+            );
+            // the actions' own diagnostics, as where an ST body calls them
+            for d in found {
+                diags.push(d.clone());
+            }
         }
     }
 }

@@ -1654,9 +1654,10 @@ pub fn parse_text(
         }
         if let Some(r) = &p.actions {
             // the actions of the ST POU just before the block: inlined where its body calls them
-            let owner = pi.checked_sub(1).and_then(|k| pous.get(k)).filter(|q| {
-                q.actions.is_none() && q.lang == Lang::St && q.sfc.is_none() && q.oop.is_none()
-            });
+            let owner = pi
+                .checked_sub(1)
+                .and_then(|k| pous.get(k))
+                .filter(|q| q.actions.is_none() && q.lang == Lang::St && q.oop.is_none());
             if let (Some(q), Some(pb)) = (owner, pending.last_mut()) {
                 if pb.name_start == q.name_range.start && !p.action_list.is_empty() {
                     for (name, name_range, text) in &p.action_list {
@@ -1724,14 +1725,32 @@ pub fn parse_text(
             blank(&mut text, r.clone());
         }
         if p.sfc.is_some() {
+            // the methods and properties of a chart's block (TwinCAT, CODESYS) are cut out of the
+            // chart (blanked, so positions stay) and lowered with the block
+            let mut body = src.to_string();
+            let mut methods = Vec::new();
+            for m in &p.methods {
+                let mut pm = pending_method(file, src, m, diags);
+                super::var_stat::name_method_blocks(&mut pm, &stat_at);
+                references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+                methods.push(pm);
+                blank(&mut body, m.whole.clone());
+            }
+            for pr in &p.properties {
+                for mut pm in super::property::pending_accessors(file, src, pr, diags) {
+                    references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+                    methods.push(pm);
+                }
+                blank(&mut body, pr.whole.clone());
+            }
             pending.push(PendingBody {
                 file,
                 name_start: p.name_range.start,
                 base: p.body.start,
-                text: src.get(p.body.clone()).unwrap_or("").to_string(),
+                text: body.get(p.body.clone()).unwrap_or("").to_string(),
                 actions: Vec::new(),
                 sfc: true,
-                methods: Vec::new(),
+                methods,
                 oop: None,
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
@@ -2244,7 +2263,11 @@ pub fn compile_pending(
     }
     decls.bases = bases;
     decls.derived = derived;
-    for pb in pending.iter().filter(|pb| !pb.sfc) {
+    // (a chart's body is lowered by the caller, its actions and methods here)
+    for pb in pending
+        .iter()
+        .filter(|pb| !pb.sfc || !pb.actions.is_empty() || !pb.methods.is_empty())
+    {
         let diags: &mut Diagnostics = if pb.derived() {
             &mut inherited
         } else {
@@ -2280,7 +2303,7 @@ pub fn compile_pending(
                 let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
                 let (body, temps, actions) = super::compile_body_with_actions(
                     pb.file,
-                    &pb.text,
+                    if pb.sfc { "" } else { &pb.text },
                     pb.base,
                     &decls,
                     p,

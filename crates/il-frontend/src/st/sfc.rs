@@ -97,10 +97,18 @@ pub fn timed_qualifier(q: &str) -> bool {
     matches!(q, "L" | "D" | "SD" | "DS" | "SL")
 }
 
-/// Whether `q` (upper-case) is an IEC action qualifier.
+/// Whether `q` (upper-case) is an IEC action qualifier, or one of [`VENDOR_QUALIFIERS`].
 pub fn is_qualifier(q: &str) -> bool {
-    matches!(q, "N" | "R" | "S" | "P" | "P0" | "P1") || timed_qualifier(q)
+    matches!(q, "N" | "R" | "S" | "P" | "P0" | "P1")
+        || timed_qualifier(q)
+        || VENDOR_QUALIFIERS.contains(&q)
 }
+
+/// How ladderc writes CODESYS's step actions (TwinCAT 3 and CODESYS V3 charts: a step's entry action,
+/// step action and exit action) as textual SFC associations: `__ENTRY` runs once when the step
+/// becomes active, `__ACTIVE` in every scan it is active (without the final scan of `N`), `__EXIT`
+/// once when it is left; no IEC name (two underscores), so no IEC chart writes them by chance.
+pub const VENDOR_QUALIFIERS: [&str; 3] = ["__ENTRY", "__ACTIVE", "__EXIT"];
 
 fn word_is(src: &str, t: &Token, w: &str) -> bool {
     matches!(t.tok, Tok::Ident | Tok::Kw(_))

@@ -234,6 +234,19 @@ pub fn collect<'e, 'a>(
                     Some(n.to_string()),
                     target,
                 )
+            } else if index.pous.get(&pou.name.key()).is_some_and(|sig| {
+                sig.kind != il_frontend::ast::PouKind::Function
+                    && sig.actions.iter().any(|x| x.eq_ignore_ascii_case(n))
+            }) {
+                // an action of the POU written outside the chart (an `ACTIONS` block of an ST
+                // file, a TwinCAT `<Action>`): the chart calls it (`CAL Act`), as an action of
+                // its own POU
+                (
+                    n.to_string(),
+                    format!("action `{n}`"),
+                    Some(n.to_string()),
+                    Target::Call(il::var_ref(n, nspan)),
+                )
             } else {
                 match is_bool_var(pou, index, n) {
                     Some(true) if values::is_ident(n) => (

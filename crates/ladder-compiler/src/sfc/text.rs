@@ -8,7 +8,7 @@
 //! condition and action bodies (their text segments point into the `.st` file, so every span of the
 //! lowered code and every diagnostic is located in the `.st` file); no second SFC semantics.
 
-use super::chart::{report, Association, Chart, CondSource, Step, Transition};
+use super::chart::{report, Association, Chart, CondSource, Step, StepAction, Transition};
 use crate::context::Ctx;
 use crate::project::{Index, PouSig};
 use crate::xml::{Arena, Element, SegKind, TextSeg};
@@ -68,6 +68,18 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
                 }
             }
             LibraryElement::Action(_) => {}
+        }
+    }
+    // the actions of programs and function blocks (`ACTIONS` blocks after the POU, CODESYS and
+    // TwinCAT), which a chart names in its associations
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::Action(a) = item {
+            // (an action TwinCAT keeps before a method is read as a method without inputs)
+            if a.method_inputs.as_ref().is_none_or(|m| m.is_empty()) {
+                if let Some(sig) = index.pous.get_mut(&a.pou.key()) {
+                    sig.actions.push(a.name.name.clone());
+                }
+            }
         }
     }
     index
@@ -219,6 +231,22 @@ pub fn lower(
         })
         .collect();
 
+    // a step action's element holds the name of the action it runs (as an XML chart's attribute)
+    let vendor_names: Vec<Vec<Option<Element>>> = tc
+        .steps
+        .iter()
+        .map(|s| {
+            s.associations
+                .iter()
+                .map(|a| {
+                    vendor_kind(&a.qualifier).map(|_| {
+                        let r = a.range.start..a.range.start + a.action.len();
+                        text_element(&arena, "attribute", src, r)
+                    })
+                })
+                .collect()
+        })
+        .collect();
     let span = |r: &Range<usize>| Span::new(file, r.start, r.end);
     let steps: Vec<Step> = tc
         .steps
@@ -248,8 +276,32 @@ pub fn lower(
         .collect();
     transitions.sort_by_key(|t| t.order);
     let mut associations = Vec::new();
+    // CODESYS's step actions (`__ENTRY`/`__ACTIVE`/`__EXIT`, as the TwinCAT reader writes them)
+    // first, as for an XML chart's vendor data: every exit action, then every entry action, then
+    // every step action, steps in text order; each stands for the action it names
+    let mut vendor: Vec<(StepAction, usize, &Element)> = Vec::new();
+    for (k, (s, names)) in tc.steps.iter().zip(&vendor_names).enumerate() {
+        for (a, el) in s.associations.iter().zip(names) {
+            if let (Some(kind), Some(el)) = (vendor_kind(&a.qualifier), el) {
+                vendor.push((kind, k, el));
+            }
+        }
+    }
+    vendor.sort_by_key(|v| v.0);
+    for (i, (kind, k, el)) in vendor.into_iter().enumerate() {
+        associations.push(Association {
+            step: k,
+            block_id: tc.steps[k].name.clone(),
+            index: i,
+            el,
+            vendor: Some(kind),
+        });
+    }
     for (k, (s, els)) in tc.steps.iter().zip(&assocs).enumerate() {
-        for (i, el) in els.iter().enumerate() {
+        for (i, (el, a)) in els.iter().zip(&s.associations).enumerate() {
+            if vendor_kind(&a.qualifier).is_some() {
+                continue;
+            }
             associations.push(Association {
                 step: k,
                 block_id: s.name.clone(),
@@ -283,10 +335,51 @@ pub fn lower(
         transitions,
         associations,
         network_elements: Vec::new(),
-        flags: Vec::new(),
+        flags: flag_marks(file, src, &body),
     };
     let sfc_el = element("SFC", "SFC", body.start..body.start);
     super::lower_chart(&mut ctx, index, &pou_el, pou, &sfc_el, chart)
+}
+
+/// How the TwinCAT reader (`crate::twincat_sfc`) passes on a chart's enabled SFC flags (its POU's
+/// SFC settings): one comment per flag in the chart's body, `(*__SFC_FLAG Init 1 4711*)`: the
+/// flag's name, whether TwinCAT declares its variable (1) and the offset of the setting in the file.
+pub const FLAG_MARK: &str = "__SFC_FLAG";
+
+/// The flags of the marks ([`FLAG_MARK`]) in `src[body]`.
+fn flag_marks(file: FileId, src: &str, body: &Range<usize>) -> Vec<super::flags::Flag> {
+    let text = src.get(body.clone()).unwrap_or("");
+    let open = format!("(*{FLAG_MARK} ");
+    let mut out = Vec::new();
+    let mut from = 0;
+    while let Some(k) = text[from..].find(&open) {
+        let s = from + k + open.len();
+        let Some(e) = text[s..].find("*)").map(|e| s + e) else {
+            break;
+        };
+        from = e;
+        let words: Vec<&str> = text[s..e].split_whitespace().collect();
+        if let [name, declare, at] = words.as_slice() {
+            let at = at.parse::<usize>().unwrap_or(body.start + s);
+            let len = name.len();
+            out.push(super::flags::Flag {
+                name: format!("SFC{name}"),
+                declare: *declare == "1",
+                span: Span::new(file, at, at + len),
+            });
+        }
+    }
+    out
+}
+
+/// The CODESYS step action a vendor qualifier (`__ENTRY`, `__ACTIVE`, `__EXIT`) stands for.
+fn vendor_kind(qualifier: &str) -> Option<StepAction> {
+    match qualifier {
+        "__ENTRY" => Some(StepAction::Entry),
+        "__ACTIVE" => Some(StepAction::Active),
+        "__EXIT" => Some(StepAction::Exit),
+        _ => None,
+    }
 }
 
 /// `ST` when the action body holds an ST statement (`:=` or `;`), else `IL` (instructions, one per line).

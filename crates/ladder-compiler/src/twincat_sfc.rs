@@ -1,0 +1,902 @@
+//! A TwinCAT 3 SFC body (`<Implementation><SFC><XmlArchive>`: CODESYS's serialized object archive,
+//! `SFCImplementationObject` > `SFCSegment` > `SFCElementList` of `SFCStep`, `SFCTransition`,
+//! `SFCBranch`, `SFCJump` and `SFCMacro` objects) read as IEC 61131-3 textual SFC, so that the SFC
+//! lowering of textual and PLCopen XML charts runs it (no second SFC engine).
+//!
+//! Input: the `<SFC>` element, the POU's `<Transition>` children (name and ST body) and the body's
+//! name (for messages). Output: [`NwlBody`] tokens: `INITIAL_STEP`/`STEP name: action(qualifier);
+//! END_STEP` and `TRANSITION FROM a TO b := condition; END_TRANSITION`, each at the offset of the
+//! archive object it comes from (so a diagnostic points at the step's or transition's lines).
+//! What the archive holds, read from the real files (the attributes of an object sit in
+//! `<l2 n="Attributes">`, keyed by GUID, each with a `Value` and a `DefaultValue`):
+//! - `38391c6d-...`: the name of a step, jump target, macro, branch or associated action; the
+//!   condition of a transition (an ST expression, or the name of a `<Transition>` object);
+//! - `7d894980-...`: the comment (ignored); `6844a48e-...`: a step is the initial step;
+//! - `a6b08bd8-...`, `700a583f-...`, `a2621e18-...`: a step's entry, step (main) and exit action
+//!   (CODESYS's step actions, written `__ENTRY`/`__ACTIVE`/`__EXIT`, see
+//!   `il_frontend::st::sfc::VENDOR_QUALIFIERS`); `e174fc0d-...`: an IEC association's qualifier;
+//! - `23bdaa98-...`: a branch is parallel (TRUE: not read);
+//! - a segment is a sequence; a branch holds segments side by side: an alternative branch when
+//!   each segment begins with a transition (after a step); sequences that end with steps share
+//!   the transition after the branch (one per step); a macro is its segment, in place.
+//!
+//! The archive carries its own table of attribute names (`SFCAttributeDescription`: GUID ->
+//! `Identifier`, `MainAction`, `InitStep` ...): each GUID above must have the name ladderc reads it
+//! as, and an attribute ladderc does not read is named by it in the error.
+//!
+//! Invariants: never guesses: any other attribute whose value is not its default, an embedded
+//! (unnamed) action or transition, a parallel branch, a timed qualifier (its duration's attribute
+//! is not known), an element out of sequence or a jump to no step is one located E0321 naming it.
+
+use crate::twincat_nwl::{NwlBody, Tok};
+use crate::xml::Element;
+use diagnostics::{code, Diagnostic, FileId, Span};
+
+type Res<T> = Result<T, Box<Diagnostic>>;
+
+const NAME: &str = "38391c6d-6d4a-42f8-8ee7-9f45e5adafa8";
+const COMMENT: &str = "7d894980-aeea-405c-a0f6-e2b26429c58f";
+const INITIAL: &str = "6844a48e-46c2-4cc8-a185-a478f3b99cc0";
+const ENTRY: &str = "a6b08bd8-b696-47e3-9cbf-7408b61c9ff8";
+const ACTIVE: &str = "700a583f-b4d4-43e4-8c14-629c7cd3bec8";
+const EXIT: &str = "a2621e18-7de3-4ea6-ae6d-89e9e0b7befd";
+const QUALIFIER: &str = "e174fc0d-80b0-4a9e-a530-ca239c249a50";
+const PARALLEL: &str = "23bdaa98-72ec-41f7-817b-9dede5697086";
+
+/// One attribute of an archive object: its GUID, value and default (unquoted), and the offset of
+/// its `Value`.
+struct Attr {
+    guid: String,
+    value: String,
+    default: String,
+    at: usize,
+}
+
+/// A step of the chart.
+struct StepOut {
+    name: String,
+    initial: bool,
+    at: usize,
+    /// (action name, qualifier as written into the text)
+    actions: Vec<(String, String)>,
+}
+
+/// A transition of the chart: from one step to one step (alternative branches only).
+struct TransOut {
+    from: usize,
+    to: Option<usize>,
+    /// The jump target when it ends in a jump (resolved once every step is known).
+    jump: Option<(String, usize)>,
+    cond: Vec<Tok>,
+    at: usize,
+}
+
+/// Where the sequence being read stands.
+#[derive(Clone)]
+enum Open {
+    /// At the start of the chart: nothing before.
+    Start,
+    /// After a step, or after the steps that end the sequences of an alternative branch: the next
+    /// transition leaves them (one transition per step, as CODESYS merges them).
+    Steps(Vec<usize>),
+    /// After transitions (of one or more branches): the next step is where they lead.
+    Trans(Vec<usize>),
+    /// After a jump: the sequence ends.
+    Closed,
+}
+
+struct Reader<'t> {
+    file: FileId,
+    what: &'t str,
+    /// The archive's own table of attribute names (`SFCAttributeDescription`: GUID -> identifier).
+    names: Vec<(String, String)>,
+    /// The POU's `<Transition>` objects: name and ST text.
+    objects: &'t [(String, String)],
+    steps: Vec<StepOut>,
+    trans: Vec<TransOut>,
+}
+
+/// Reads the `<SFC>` element `sfc` of the body named `what`; `objects`: the POU's `<Transition>`
+/// children (name, ST text).
+pub(crate) fn lower(
+    file: FileId,
+    sfc: &Element,
+    what: &str,
+    objects: &[(String, String)],
+    pou: &Element,
+) -> Res<NwlBody> {
+    let flags = flags(file, pou)?;
+    let root = sfc
+        .child("XmlArchive")
+        .and_then(|a| a.child("Data"))
+        .and_then(|d| d.children.iter().find(|o| o.name() == "o"))
+        .filter(|o| o.attr("t") == Some("SFCImplementationObject"));
+    let Some(root) = root else {
+        return Err(fail(
+            file,
+            sfc,
+            format!("the SFC body of `{what}` holds no SFCImplementationObject archive"),
+        ));
+    };
+    let Some(segment) = root
+        .children
+        .iter()
+        .find(|o| o.name() == "o" && o.attr("n") == Some("Root"))
+    else {
+        return Err(fail(
+            file,
+            root,
+            format!("the SFC body of `{what}` has no root segment"),
+        ));
+    };
+    let names = descriptions(sfc);
+    // the archive's table names the attributes ladderc reads as it reads them, or it is not read
+    for (guid, meaning) in [
+        (NAME, "Name"),
+        (COMMENT, "Comment"),
+        (INITIAL, "InitStep"),
+        (ENTRY, "EntryAction"),
+        (ACTIVE, "MainAction"),
+        (EXIT, "ExitAction"),
+        (QUALIFIER, "Qualifier"),
+        (PARALLEL, "Parallel"),
+    ] {
+        if let Some((_, id)) = names.iter().find(|(g, _)| g == guid) {
+            if !id.eq_ignore_ascii_case(meaning) {
+                return Err(fail(
+                    file,
+                    root,
+                    format!(
+                        "the archive of `{what}` names attribute {{{guid}}} `{id}`, which ladderc \
+                         reads as `{meaning}`"
+                    ),
+                ));
+            }
+        }
+    }
+    let mut r = Reader {
+        file,
+        what,
+        names,
+        objects,
+        steps: Vec::new(),
+        trans: Vec::new(),
+    };
+    let end = r.segment(segment, Open::Start)?;
+    if let Open::Trans(open) = end {
+        let t = &r.trans[open[0]];
+        return Err(Box::new(
+            Diagnostic::error(
+                code::E0321,
+                format!(
+                    "TwinCAT SFC body of `{what}`: the chart ends with a transition that leads to no \
+                     step"
+                ),
+            )
+            .at(Span::new(file, t.at, t.at))
+            .with_hint("end the sequence with a jump to a step"),
+        ));
+    }
+    // jumps: to a step of the chart by name
+    for k in 0..r.trans.len() {
+        if let Some((target, at)) = r.trans[k].jump.take() {
+            let Some(s) = r
+                .steps
+                .iter()
+                .position(|s| s.name.eq_ignore_ascii_case(&target))
+            else {
+                return Err(Box::new(
+                    Diagnostic::error(
+                        code::E0321,
+                        format!(
+                            "TwinCAT SFC body of `{what}`: a jump to `{target}`, which is no step of \
+                             the chart"
+                        ),
+                    )
+                    .at(Span::new(file, at, at))
+                    .with_hint("jump to the name of a step of the same chart"),
+                ));
+            };
+            r.trans[k].to = Some(s);
+        }
+    }
+    let mut body = r.text();
+    // the chart's enabled flags, for the SFC lowering (`crate::sfc::text`), and the variables
+    // TwinCAT declares for them when the POU does not (so its methods and actions can use them)
+    let declaration = pou
+        .child("Declaration")
+        .map(|d| d.text())
+        .unwrap_or_default();
+    let mut head = Vec::new();
+    for (name, declare, at) in flags {
+        let var = format!("SFC{name}");
+        head.push(Tok {
+            text: format!(
+                "(*{} {name} {} {at}*)",
+                crate::sfc::text::FLAG_MARK,
+                u8::from(declare)
+            ),
+            at: 0,
+        });
+        if declare && !declares(&declaration, &var) {
+            if let Some(ty) = flag_type(&name) {
+                body.temps.push((var, ty.to_string()));
+            }
+        }
+    }
+    head.append(&mut body.toks);
+    body.toks = head;
+    Ok(body)
+}
+
+/// The type TwinCAT gives the variable of an SFC flag it declares implicitly (`Tip` -> `SFCTip`).
+fn flag_type(flag: &str) -> Option<&'static str> {
+    Some(match flag.to_ascii_lowercase().as_str() {
+        "init" | "reset" | "pause" | "quiterror" | "error" | "trans" | "tip" | "tipmode"
+        | "enablelimit" => "BOOL",
+        "currentstep" | "errorstep" | "errorpou" => "STRING",
+        _ => return None,
+    })
+}
+
+/// Whether the declaration text declares `var` (`var :` or `var,` after a blank or line start).
+fn declares(declaration: &str, var: &str) -> bool {
+    let text = strip_comments(declaration).to_ascii_lowercase();
+    let var = var.to_ascii_lowercase();
+    let b = text.as_bytes();
+    let mut from = 0;
+    while let Some(k) = text[from..].find(&var) {
+        let s = from + k;
+        let e = s + var.len();
+        let before = s == 0 || !(b[s - 1].is_ascii_alphanumeric() || b[s - 1] == b'_');
+        let after = text[e..].trim_start();
+        if before && (after.starts_with(':') && !after.starts_with(":=") || after.starts_with(','))
+        {
+            return true;
+        }
+        from = e;
+    }
+    false
+}
+
+/// The SFC flags the POU's settings enable (`<ObjectProperties>` > `SFCProperty` > `Flags`: a
+/// flag's name, then its `Use` and `Declare`), each with whether TwinCAT declares its variable and
+/// the offset of its name; settings that defer to the project's defaults are an error (ladderc
+/// does not read them).
+fn flags(file: FileId, pou: &Element) -> Res<Vec<(String, bool, usize)>> {
+    let Some(prop) = pou
+        .child("ObjectProperties")
+        .and_then(|p| p.child("XmlArchive"))
+        .and_then(|a| a.child("Data"))
+        .and_then(|d| {
+            d.children
+                .iter()
+                .find(|o| o.name() == "o" && o.attr("t") == Some("SFCProperty"))
+        })
+    else {
+        return Ok(Vec::new());
+    };
+    let v = |o: &Element, n: &str| {
+        o.children
+            .iter()
+            .find(|c| c.name() == "v" && c.attr("n") == Some(n))
+            .map(|c| c.text_ref().trim().eq_ignore_ascii_case("true"))
+    };
+    if v(prop, "UseDefaults") == Some(true) {
+        return Err(Box::new(
+            Diagnostic::error(
+                code::E0321,
+                "TwinCAT SFC body: the POU's SFC settings are the project's defaults, which                  ladderc does not read (it would not know which flags, SFCInit, SFCReset ...,                  the chart has)",
+            )
+            .at(Span::new(file, prop.tag_start(), prop.tag_end()))
+            .with_hint(
+                "untick `use defaults` in the POU's SFC settings (Properties > SFC settings) so                  that its flags are saved with it",
+            ),
+        ));
+    }
+    let mut out = Vec::new();
+    for d in prop
+        .children
+        .iter()
+        .filter(|c| c.name() == "d2" && c.attr("n") == Some("Flags"))
+    {
+        let mut name: Option<(String, usize)> = None;
+        for c in d.children.iter() {
+            match c.name() {
+                "v" => name = Some((c.text_ref().trim().to_string(), c.tag_start())),
+                "o" => {
+                    if let Some((n, at)) = name.take() {
+                        if v(c, "Use") == Some(true) && crate::values::is_ident(&n) {
+                            let n = n.strip_prefix("SFC").unwrap_or(&n).to_string();
+                            out.push((n, v(c, "Declare") == Some(true), at));
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn fail(file: FileId, el: &Element, msg: String) -> Box<Diagnostic> {
+    Box::new(
+        Diagnostic::error(code::E0321, format!("TwinCAT SFC body: {msg}"))
+            .at(Span::new(file, el.tag_start(), el.tag_end()))
+            .with_hint(
+                "export the POU from TwinCAT as PLCopen XML (right-click > Export PLCopenXML) and \
+                 give ladderc that file, or write the chart without it",
+            ),
+    )
+}
+
+/// The text of a `<v>`: a quoted string (`"..."`, backslash escapes) unquoted.
+fn unquote(raw: &str) -> String {
+    let t = raw.trim();
+    let Some(inner) = t.strip_prefix('"').and_then(|t| t.strip_suffix('"')) else {
+        return t.to_string();
+    };
+    let mut out = String::new();
+    let mut chars = inner.chars();
+    while let Some(c) = chars.next() {
+        if c == '\\' {
+            match chars.next() {
+                Some('n') => out.push('\n'),
+                Some('r') => out.push('\r'),
+                Some('t') => out.push('\t'),
+                Some(o) => out.push(o),
+                None => {}
+            }
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// The attributes of an archive object.
+fn attributes(o: &Element) -> Vec<Attr> {
+    let mut out = Vec::new();
+    for list in o
+        .children
+        .iter()
+        .filter(|c| c.name() == "l2" && c.attr("n") == Some("Attributes"))
+    {
+        for a in list.children.iter().filter(|c| c.name() == "o") {
+            let v = |parent: &Element, n: &str| {
+                parent
+                    .children
+                    .iter()
+                    .find(|c| c.name() == "v" && c.attr("n") == Some(n))
+                    .map(|c| (unquote(&c.text_ref()), c.tag_start()))
+            };
+            let Some((guid, _)) = v(a, "AttributeId") else {
+                continue;
+            };
+            let value = a
+                .children
+                .iter()
+                .find(|c| c.name() == "o" && c.attr("n") == Some("Value"));
+            let (value, at) = value
+                .and_then(|val| v(val, "Value"))
+                .unwrap_or((String::new(), a.tag_start()));
+            let default = a
+                .children
+                .iter()
+                .find(|c| c.name() == "o" && c.attr("n") == Some("Value"))
+                .and_then(|val| v(val, "DefaultValue"))
+                .map(|d| d.0)
+                .unwrap_or_default();
+            out.push(Attr {
+                guid: guid.trim_matches(['{', '}']).to_ascii_lowercase(),
+                value,
+                default,
+                at,
+            });
+        }
+    }
+    out
+}
+
+/// The archive's table of attribute descriptions (`<d2 n="Attributes" cvt="SFCAttributeDescription">`:
+/// a GUID, then its description with its `Identifier`), lower-case GUID and identifier.
+fn descriptions(sfc: &Element) -> Vec<(String, String)> {
+    let mut out = Vec::new();
+    for d in sfc
+        .walk()
+        .filter(|e| e.name() == "d2" && e.attr("cvt") == Some("SFCAttributeDescription"))
+    {
+        let mut guid: Option<String> = None;
+        for c in d.children.iter() {
+            match c.name() {
+                "v" => {
+                    guid = Some(
+                        c.text_ref()
+                            .trim()
+                            .trim_matches(['{', '}'])
+                            .to_ascii_lowercase(),
+                    )
+                }
+                "o" => {
+                    let id = c
+                        .children
+                        .iter()
+                        .find(|v| v.name() == "v" && v.attr("n") == Some("Identifier"))
+                        .map(|v| unquote(&v.text_ref()));
+                    if let (Some(g), Some(id)) = (guid.take(), id) {
+                        out.push((g, id));
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+    out
+}
+
+/// The element list of an object (`<o n="ElementList"><l2 n="InnerList">` children), each with its
+/// type: its own `t`, else the list's element type `cet` (the archive leaves out the `t` of an
+/// element of the list's one type).
+fn inner<'e, 'a>(o: &'e Element<'a>) -> Vec<(&'e Element<'a>, &'a str)> {
+    o.children
+        .iter()
+        .filter(|c| c.name() == "o" && c.attr("n") == Some("ElementList"))
+        .flat_map(|l| l.children.iter())
+        .filter(|c| c.name() == "l2" && c.attr("n") == Some("InnerList"))
+        .flat_map(|l| {
+            let cet = l.attr("cet").unwrap_or("");
+            l.children
+                .iter()
+                .filter(|c| c.name() == "o")
+                .map(move |c| (c, c.attr("t").unwrap_or(cet)))
+        })
+        .collect()
+}
+
+impl Reader<'_> {
+    fn err(&self, at: usize, msg: String, hint: &str) -> Box<Diagnostic> {
+        Box::new(
+            Diagnostic::error(
+                code::E0321,
+                format!("TwinCAT SFC body of `{}`: {msg}", self.what),
+            )
+            .at(Span::new(self.file, at, at))
+            .with_hint(hint.to_string()),
+        )
+    }
+
+    /// The attributes of `o` that ladderc reads (`known`, and the comment); any other one whose
+    /// value is not its default is an error naming it.
+    fn known_attributes(&self, o: &Element, kind: &str, known: &[&str]) -> Res<Vec<Attr>> {
+        let attrs = attributes(o);
+        for a in &attrs {
+            if a.guid != COMMENT && !known.contains(&a.guid.as_str()) && a.value != a.default {
+                let named = self
+                    .names
+                    .iter()
+                    .find(|(g, _)| *g == a.guid)
+                    .map_or(String::new(), |(_, n)| format!("`{n}` "));
+                let what = if a.guid == PARALLEL {
+                    "a parallel branch, which ladderc does not read in a TwinCAT chart".to_string()
+                } else {
+                    "which ladderc does not read".to_string()
+                };
+                return Err(self.err(
+                    a.at,
+                    format!(
+                        "the {kind} has attribute {named}{{{}}} set to `{}`: {what}",
+                        a.guid, a.value
+                    ),
+                    "clear that setting of the element in TwinCAT, or export the POU as PLCopen XML",
+                ));
+            }
+        }
+        Ok(attrs)
+    }
+
+    /// An embedded (unnamed) action or transition body (`<o n="EmbeddedMainAction">`): not read.
+    fn no_embedded(&self, o: &Element, kind: &str) -> Res<()> {
+        if let Some(e) = o
+            .children
+            .iter()
+            .find(|c| c.name() == "o" && c.attr("n").is_some_and(|n| n.starts_with("Embedded")))
+        {
+            return Err(self.err(
+                e.tag_start(),
+                format!(
+                    "the {kind} has an embedded body ({}), which ladderc does not read",
+                    e.attr("n").unwrap_or("")
+                ),
+                "make the embedded body an action or transition of the POU and name it in the chart",
+            ));
+        }
+        Ok(())
+    }
+
+    /// Reads the sequence of `segment` from `open`; where it stands after its last element.
+    fn segment(&mut self, segment: &Element, mut open: Open) -> Res<Open> {
+        for (o, kind) in inner(segment) {
+            open = self.element(o, kind, open)?;
+        }
+        Ok(open)
+    }
+
+    fn element(&mut self, o: &Element, kind: &str, open: Open) -> Res<Open> {
+        let at = o.tag_start();
+        if matches!(open, Open::Closed) {
+            return Err(self.err(
+                at,
+                format!("a {kind} follows a jump"),
+                "a jump ends its sequence",
+            ));
+        }
+        match kind {
+            "SFCStep" => {
+                let attrs =
+                    self.known_attributes(o, "step", &[NAME, INITIAL, ENTRY, ACTIVE, EXIT])?;
+                self.no_embedded(o, "step")?;
+                let get = |g: &str| attrs.iter().find(|a| a.guid == g);
+                let name = get(NAME)
+                    .map(|a| a.value.trim().to_string())
+                    .unwrap_or_default();
+                if name.is_empty() {
+                    return Err(self.err(at, "a step without a name".into(), "name the step"));
+                }
+                let initial = get(INITIAL).is_some_and(|a| a.value.eq_ignore_ascii_case("TRUE"));
+                let mut actions = Vec::new();
+                for (g, q) in [(ENTRY, "__ENTRY"), (ACTIVE, "__ACTIVE"), (EXIT, "__EXIT")] {
+                    if let Some(a) = get(g).filter(|a| !a.value.trim().is_empty()) {
+                        actions.push((a.value.trim().to_string(), q.to_string()));
+                    }
+                }
+                for (assoc, _) in inner(o) {
+                    let attrs =
+                        self.known_attributes(assoc, "action association", &[NAME, QUALIFIER])?;
+                    let get = |g: &str| attrs.iter().find(|a| a.guid == g);
+                    let name = get(NAME)
+                        .map(|a| a.value.trim().to_string())
+                        .unwrap_or_default();
+                    let q = get(QUALIFIER)
+                        .map(|a| a.value.trim().to_ascii_uppercase())
+                        .unwrap_or_default();
+                    let q = if q.is_empty() { "N".to_string() } else { q };
+                    if name.is_empty() {
+                        return Err(self.err(
+                            assoc.tag_start(),
+                            "an action association without an action".into(),
+                            "name the action",
+                        ));
+                    }
+                    if !matches!(q.as_str(), "N" | "R" | "S" | "P" | "P0" | "P1") {
+                        let why = if matches!(q.as_str(), "L" | "D" | "SD" | "DS" | "SL") {
+                            "a timed qualifier, whose duration ladderc does not find in the archive"
+                        } else {
+                            "not an IEC action qualifier"
+                        };
+                        return Err(self.err(
+                            assoc.tag_start(),
+                            format!(
+                                "the association of action `{name}` has qualifier `{q}`: {why}"
+                            ),
+                            "use N, S, R, P, P0 or P1, or export the POU as PLCopen XML",
+                        ));
+                    }
+                    actions.push((name, q));
+                }
+                let k = self.steps.len();
+                self.steps.push(StepOut {
+                    name,
+                    initial,
+                    at,
+                    actions,
+                });
+                match open {
+                    Open::Start => {}
+                    Open::Trans(ts) => {
+                        for t in ts {
+                            self.trans[t].to = Some(k);
+                        }
+                    }
+                    _ => {
+                        return Err(self.err(
+                            at,
+                            format!(
+                                "step `{}` follows a step without a transition",
+                                self.steps[k].name
+                            ),
+                            "put a transition between two steps",
+                        ))
+                    }
+                }
+                Ok(Open::Steps(vec![k]))
+            }
+            "SFCTransition" => {
+                let attrs = self.known_attributes(o, "transition", &[NAME])?;
+                self.no_embedded(o, "transition")?;
+                let Open::Steps(from) = open else {
+                    return Err(self.err(
+                        at,
+                        "a transition that does not follow a step (a parallel branch or two transitions \
+                         in a row)"
+                            .into(),
+                        "ladderc reads alternative branches of TwinCAT charts; export the POU as \
+                         PLCopen XML for parallel ones",
+                    ));
+                };
+                let cond = attrs.iter().find(|a| a.guid == NAME);
+                let (text, cat) = cond
+                    .map(|a| (a.value.clone(), a.at))
+                    .unwrap_or((String::new(), at));
+                let cond = self.condition(&text, cat)?;
+                let mut out = Vec::new();
+                for from in from {
+                    self.trans.push(TransOut {
+                        from,
+                        to: None,
+                        jump: None,
+                        cond: cond.clone(),
+                        at,
+                    });
+                    out.push(self.trans.len() - 1);
+                }
+                Ok(Open::Trans(out))
+            }
+            "SFCJump" => {
+                let attrs = self.known_attributes(o, "jump", &[NAME])?;
+                let target = attrs
+                    .iter()
+                    .find(|a| a.guid == NAME)
+                    .map(|a| a.value.trim().to_string())
+                    .unwrap_or_default();
+                let Open::Trans(ts) = open else {
+                    return Err(self.err(
+                        at,
+                        format!("a jump to `{target}` that does not follow a transition"),
+                        "a jump ends a sequence after its transition",
+                    ));
+                };
+                for t in ts {
+                    self.trans[t].jump = Some((target.clone(), at));
+                }
+                Ok(Open::Closed)
+            }
+            "SFCMacro" => {
+                // a macro shows part of the sequence folded into one box; it runs in place
+                self.known_attributes(o, "macro", &[NAME])?;
+                let Some(seg) = o
+                    .children
+                    .iter()
+                    .find(|c| c.name() == "o" && c.attr("n") == Some("Segment"))
+                else {
+                    return Err(self.err(at, "a macro without a segment".into(), "check the file"));
+                };
+                self.segment(seg, open)
+            }
+            "SFCBranch" => {
+                self.known_attributes(o, "branch", &[NAME])?;
+                let segments = inner(o);
+                let Open::Steps(ref before) = open else {
+                    return Err(self.err(
+                        at,
+                        "a parallel branch (a branch after a transition), which ladderc does not \
+                         read in a TwinCAT chart"
+                            .into(),
+                        "export the POU as PLCopen XML: ladderc reads parallel branches there",
+                    ));
+                };
+                if before.len() != 1 {
+                    return Err(self.err(
+                        at,
+                        "a branch right after the steps that end another branch".into(),
+                        "put a transition and a step between the two branches",
+                    ));
+                }
+                // the sequences end with transitions (the branch's convergence is their common
+                // next step), jumps, or steps (the transition after the branch leaves each)
+                let mut after = Vec::new();
+                let mut ends = Vec::new();
+                for (seg, _) in segments {
+                    let first = inner(seg).first().map_or("", |e| e.1);
+                    if first != "SFCTransition" {
+                        return Err(self.err(
+                            seg.tag_start(),
+                            format!(
+                                "a branch whose sequence begins with {} (an alternative branch \
+                                 begins each sequence with a transition)",
+                                if first.is_empty() { "nothing" } else { first }
+                            ),
+                            "export the POU as PLCopen XML",
+                        ));
+                    }
+                    match self.segment(seg, open.clone())? {
+                        Open::Trans(ts) => after.extend(ts),
+                        Open::Steps(ss) => ends.extend(ss),
+                        _ => {}
+                    }
+                }
+                match (after.is_empty(), ends.is_empty()) {
+                    (true, true) => Ok(Open::Closed),
+                    (false, true) => Ok(Open::Trans(after)),
+                    (true, false) => Ok(Open::Steps(ends)),
+                    (false, false) => Err(self.err(
+                        at,
+                        "an alternative branch some of whose sequences end with a step and others \
+                         with a transition"
+                            .into(),
+                        "end every sequence of the branch alike",
+                    )),
+                }
+            }
+            other => Err(self.err(
+                at,
+                format!("an element of kind `{other}`, which ladderc does not read"),
+                "export the POU as PLCopen XML",
+            )),
+        }
+    }
+
+    /// The tokens of a transition condition: the ST expression (a trailing `;` dropped), or the ST
+    /// text of the `<Transition>` object it names (`Name := expr;` or an expression).
+    fn condition(&self, text: &str, at: usize) -> Res<Vec<Tok>> {
+        let t = text.trim();
+        let (expr, from_object) = match self.objects.iter().find(|(n, _)| n.eq_ignore_ascii_case(t))
+        {
+            Some((name, body)) => {
+                let body = strip_comments(body);
+                let b = body.trim();
+                let b = b.strip_suffix(';').unwrap_or(b).trim();
+                // `Name := expr` (the transition assigns its own name)
+                let rest = b
+                    .get(..name.len())
+                    .filter(|p| p.eq_ignore_ascii_case(name))
+                    .map(|_| b[name.len()..].trim_start())
+                    .and_then(|r| r.strip_prefix(":="));
+                (rest.unwrap_or(b).trim().to_string(), true)
+            }
+            None => (
+                strip_comments(t)
+                    .trim()
+                    .trim_end_matches(';')
+                    .trim()
+                    .to_string(),
+                false,
+            ),
+        };
+        if expr.is_empty() || expr.contains(';') || expr.contains(":=") {
+            let what = if from_object {
+                format!("the transition `{t}` is not one boolean expression")
+            } else if expr.is_empty() {
+                "a transition without a condition".to_string()
+            } else {
+                format!("the transition condition `{t}` is not one boolean expression")
+            };
+            return Err(self.err(
+                at,
+                what,
+                "write the condition as one ST expression (or a transition object holding one)",
+            ));
+        }
+        Ok(words(&expr)
+            .into_iter()
+            .map(|w| Tok { text: w, at })
+            .collect())
+    }
+
+    /// The textual chart, each element at its archive object.
+    fn text(&self) -> NwlBody {
+        let mut toks = Vec::new();
+        let mut push = |text: &str, at: usize| {
+            toks.push(Tok {
+                text: text.to_string(),
+                at,
+            })
+        };
+        // steps and transitions in archive order: transitions leaving one step keep their order
+        // (a branch's sequences from left to right: CODESYS's priority)
+        let mut items: Vec<(usize, bool, usize)> = self
+            .steps
+            .iter()
+            .enumerate()
+            .map(|(k, s)| (s.at, true, k))
+            .chain(self.trans.iter().enumerate().map(|(k, t)| (t.at, false, k)))
+            .collect();
+        items.sort_by_key(|i| i.0);
+        for (at, is_step, k) in items {
+            if is_step {
+                let s = &self.steps[k];
+                push(if s.initial { "INITIAL_STEP" } else { "STEP" }, at);
+                push(&s.name, at);
+                push(":", at);
+                for (a, q) in &s.actions {
+                    push(&format!("{a}({q});"), at);
+                }
+                push("END_STEP", at);
+            } else {
+                let t = &self.trans[k];
+                let to = t.to.map_or("?", |s| self.steps[s].name.as_str());
+                push("TRANSITION", at);
+                push("FROM", at);
+                push(&self.steps[t.from].name, at);
+                push("TO", at);
+                push(to, at);
+                push(":=", at);
+                for w in &t.cond {
+                    push(&w.text, w.at);
+                }
+                push(";", at);
+                push("END_TRANSITION", at);
+            }
+        }
+        NwlBody {
+            what: self.what.to_string(),
+            temps: Vec::new(),
+            toks,
+        }
+    }
+}
+
+/// `text` without its `(* *)` and `//` comments (strings kept).
+fn strip_comments(text: &str) -> String {
+    let b = text.as_bytes();
+    let mut out = String::new();
+    let mut i = 0;
+    let mut keep = 0;
+    while i < b.len() {
+        match b[i] {
+            b'(' if b.get(i + 1) == Some(&b'*') => {
+                out.push_str(&text[keep..i]);
+                out.push(' ');
+                i = text[i + 2..].find("*)").map_or(b.len(), |e| i + 2 + e + 2);
+                keep = i;
+            }
+            b'/' if b.get(i + 1) == Some(&b'/') => {
+                out.push_str(&text[keep..i]);
+                out.push(' ');
+                i = text[i..].find('\n').map_or(b.len(), |e| i + e);
+                keep = i;
+            }
+            q @ (b'\'' | b'"') => {
+                i += 1;
+                while i < b.len() && b[i] != q {
+                    i += if b[i] == b'$' { 2 } else { 1 };
+                }
+                i += 1;
+            }
+            _ => i += 1,
+        }
+    }
+    out.push_str(text.get(keep..).unwrap_or(""));
+    out
+}
+
+/// The words of an expression, split at white space outside strings (each fits on a line).
+fn words(text: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    let mut quote: Option<char> = None;
+    for c in text.chars() {
+        match quote {
+            Some(q) => {
+                cur.push(c);
+                if c == q {
+                    quote = None;
+                }
+            }
+            None if c.is_whitespace() => {
+                if !cur.is_empty() {
+                    out.push(std::mem::take(&mut cur));
+                }
+            }
+            None => {
+                if c == '\'' || c == '"' {
+                    quote = Some(c);
+                }
+                cur.push(c);
+            }
+        }
+    }
+    if !cur.is_empty() {
+        out.push(cur);
+    }
+    out
+}
