@@ -72,8 +72,9 @@ pub fn read(file: FileId, src: &str, start: usize) -> Option<Result<String, Fail
     Some(translate(file, src, start, end, &value))
 }
 
-/// Where the JSON body ends: before the POU's closing keyword, if the file has one.
-fn json_end(src: &str, start: usize) -> usize {
+/// Where the JSON body that starts at `start` ends: before the POU's closing keyword, if the file
+/// has one (the editor closes the POU after the JSON: `}` then `END_PROGRAM`).
+pub fn json_end(src: &str, start: usize) -> usize {
     let mut body = src[start..].trim_end();
     for end in ["END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION"] {
         let cut = body.len().saturating_sub(end.len());

@@ -1620,15 +1620,7 @@ fn openplc_v4_json_body(src: &str) -> Option<usize> {
         if !src[start..].starts_with('{') {
             continue;
         }
-        let mut body = src[start..].trim_end();
-        // the editor closes the POU after the JSON (`}` then `END_PROGRAM`)
-        for end in ["END_PROGRAM", "END_FUNCTION_BLOCK", "END_FUNCTION"] {
-            let cut = body.len().saturating_sub(end.len());
-            if body.get(cut..).is_some_and(|t| t.eq_ignore_ascii_case(end)) {
-                body = body[..cut].trim_end();
-                break;
-            }
-        }
+        let body = &src[start..crate::openplc_v4_ld::json_end(src, start)];
         // (a ladder body cut short is still one: its reader says where it stops)
         let json = (body.ends_with('}') || body.contains("\"rungs\""))
             && ["\"rungs\"", "\"nodes\"", "\"blocks\""]

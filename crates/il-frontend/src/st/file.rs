@@ -587,6 +587,33 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
     (out, stray)
 }
 
+/// The pending methods of POU `p`'s methods and properties' accessors (declarations read, their
+/// `VAR_STAT` blocks named, their reference types applied) pushed on `methods`, each cut out of
+/// `body` (blanked: positions stay); `(method_diags, diags)`: where a method's and a property's
+/// diagnostics go (a derived block's methods are reported once its base is found).
+fn pending_members(
+    (file, src, p, stat_at): (FileId, &str, &PouText, &[usize]),
+    references: &mut RefTypes,
+    body: &mut String,
+    methods: &mut Vec<PendingMethod>,
+    (method_diags, diags): (&mut Diagnostics, &mut Diagnostics),
+) {
+    for m in &p.methods {
+        let mut pm = pending_method(file, src, m, method_diags);
+        super::var_stat::name_method_blocks(&mut pm, stat_at);
+        references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+        methods.push(pm);
+        blank(body, m.whole.clone());
+    }
+    for pr in &p.properties {
+        for mut pm in super::property::pending_accessors(file, src, pr, diags) {
+            references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
+            methods.push(pm);
+        }
+        blank(body, pr.whole.clone());
+    }
+}
+
 /// Reads a method's declarations (its variable blocks, and its result as a variable named like the
 /// method) with the IL parser, in place: diagnostics point into the file.
 pub(super) fn pending_method(
@@ -1729,20 +1756,15 @@ pub fn parse_text(
             // chart (blanked, so positions stay) and lowered with the block
             let mut body = src.to_string();
             let mut methods = Vec::new();
-            for m in &p.methods {
-                let mut pm = pending_method(file, src, m, diags);
-                super::var_stat::name_method_blocks(&mut pm, &stat_at);
-                references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
-                methods.push(pm);
-                blank(&mut body, m.whole.clone());
-            }
-            for pr in &p.properties {
-                for mut pm in super::property::pending_accessors(file, src, pr, diags) {
-                    references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
-                    methods.push(pm);
-                }
-                blank(&mut body, pr.whole.clone());
-            }
+            let mut method_diags = Diagnostics::new();
+            pending_members(
+                (file, src, p, &stat_at),
+                &mut references,
+                &mut body,
+                &mut methods,
+                (&mut method_diags, diags),
+            );
+            diags.extend(method_diags);
             pending.push(PendingBody {
                 file,
                 name_start: p.name_range.start,
@@ -1907,26 +1929,18 @@ pub fn parse_text(
                 // after E0330 when the base is a library's)
                 let mut oop = oop;
                 let mut deferred = Diagnostics::new();
-                for m in &p.methods {
-                    let sink = match &oop {
-                        Some(super::inherit::Oop::Block(b)) if !b.extends.is_empty() => {
-                            &mut deferred
-                        }
-                        _ => &mut *diags,
-                    };
-                    let mut pm = pending_method(file, src, m, sink);
-                    super::var_stat::name_method_blocks(&mut pm, &stat_at);
-                    references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
-                    methods.push(pm);
-                    blank(&mut body, m.whole.clone());
-                }
-                for pr in &p.properties {
-                    for mut pm in super::property::pending_accessors(file, src, pr, diags) {
-                        references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
-                        methods.push(pm);
-                    }
-                    blank(&mut body, pr.whole.clone());
-                }
+                let derived =
+                    matches!(&oop, Some(super::inherit::Oop::Block(b)) if !b.extends.is_empty());
+                let mut now = Diagnostics::new();
+                let method_sink = if derived { &mut deferred } else { &mut now };
+                pending_members(
+                    (file, src, p, &stat_at),
+                    &mut references,
+                    &mut body,
+                    &mut methods,
+                    (method_sink, diags),
+                );
+                diags.extend(now);
                 if let Some(super::inherit::Oop::Block(b)) = &mut oop {
                     // a bound naming another file's constant (E0022) is reported now: the file is
                     // then read again with the other files' constants known (Struckig's tests:
