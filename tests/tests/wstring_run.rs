@@ -71,6 +71,9 @@ fn literals(ty: &str) -> Vec<String> {
         "DATE" => &["D#2024-01-31", "D#1970-01-01"],
         "TOD" => &["TOD#12:30:00.5", "TOD#00:00:00"],
         "DT" => &["DT#2024-01-31-12:30:00", "DT#1969-12-31-23:00:00"],
+        "LDATE" => &["LDATE#2024-01-31", "LDATE#1970-01-01"],
+        "LTOD" => &["LTOD#12:30:00.000000005", "LTOD#00:00:00"],
+        "LDT" => &["LDT#2024-01-31-12:30:00", "LDT#1969-12-31-23:00:00"],
         "STRING" => &["'abc'", "''"],
         other => panic!("no literals for {other}"),
     };
@@ -89,6 +92,7 @@ const TEXTS: &[&str] = &[
     "D#2024-01-31",
     "TOD#12:30:00.5",
     "DT#2024-01-31-12:30:00",
+    "LDT#2024-01-31-12:30:00",
     "",
 ];
 
@@ -100,7 +104,7 @@ fn run_st(dir: &std::path::Path, src: &str) -> BTreeMap<String, String> {
 #[test]
 fn every_wstring_conversion_matches_its_string_twin() {
     let convs = wide_conversions();
-    // 19 elementary types and STRING, both directions (STRING_TO_WSTRING, WSTRING_TO_STRING once each)
+    // every elementary type and STRING, both directions (STRING_TO_WSTRING, WSTRING_TO_STRING once each)
     assert!(convs.len() >= 38, "{convs:?}");
     let mut decl = String::new();
     let mut body = String::new();
