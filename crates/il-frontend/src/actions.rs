@@ -564,6 +564,17 @@ fn relabel(stmts: &mut [IlStmt], tag: &str, end: &Ident, returns: &mut bool) {
     }
 }
 
+/// Whether a name is one of the variables `p` declares (any case): the `is_var` of
+/// [`inline_calls`] for a body of `p` or of one of its actions or methods.
+pub fn declares(p: &crate::ast::Pou) -> impl Fn(&str) -> bool {
+    let vars: std::collections::HashSet<String> = p
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+        .collect();
+    move |n: &str| vars.contains(&n.to_ascii_uppercase())
+}
+
 /// Inlines the calls of a POU's own IL-level actions in `body` (an IL body, or an action's
 /// statements): `CAL Act` (no arguments, `Act` not a variable of the POU, see `is_var`) is replaced
 /// by a copy of the action's statements ([`instantiate`], labels tagged `<prefix><n>_`), `CALC Act` /

@@ -1458,12 +1458,7 @@ fn lower_textual_sfc(
             p.var_blocks.push(VarBlock::locals(hidden, span));
         }
         if let Some((acts, found)) = own.get(&p.name.key()) {
-            let vars: std::collections::HashSet<String> = p
-                .var_blocks
-                .iter()
-                .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
-                .collect();
-            let is_var = |n: &str| vars.contains(&n.to_ascii_uppercase());
+            let is_var = il_frontend::actions::declares(p);
             let mut next = 0;
             p.body = il_frontend::actions::inline_calls(
                 std::mem::take(&mut p.body),

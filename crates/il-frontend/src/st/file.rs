@@ -2641,12 +2641,7 @@ pub fn inline_own_method_calls(
         .iter()
         .map(|a| (a.name.key(), a.body.clone()))
         .collect();
-    let vars: std::collections::HashSet<String> = p
-        .var_blocks
-        .iter()
-        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
-        .collect();
-    let is_var = |n: &str| vars.contains(&n.to_ascii_uppercase());
+    let is_var = crate::actions::declares(p);
     let mut next = 0;
     let mut local = Diagnostics::new();
     p.body = crate::actions::inline_calls(

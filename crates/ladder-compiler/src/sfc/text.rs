@@ -153,31 +153,22 @@ pub fn lower(
         .iter()
         .map(|a| format!("action name=\"{}\"", attr_value(&a.name)))
         .collect();
-    let assoc_tags: Vec<Vec<(String, String)>> = tc
-        .steps
-        .iter()
-        .map(|s| {
-            s.associations
+    let assoc_tags: Vec<Vec<(String, String)>> = per_association(&tc.steps, |_, a| {
+        let mut t = format!("action qualifier=\"{}\"", attr_value(&a.qualifier));
+        if let Some(d) = &a.time {
+            let text = src.get(d.clone()).unwrap_or("").trim();
+            t.push_str(&format!(" duration=\"{}\"", attr_value(text)));
+        }
+        if !a.indicators.is_empty() {
+            let names: Vec<&str> = a
+                .indicators
                 .iter()
-                .map(|a| {
-                    let mut t = format!("action qualifier=\"{}\"", attr_value(&a.qualifier));
-                    if let Some(d) = &a.time {
-                        let text = src.get(d.clone()).unwrap_or("").trim();
-                        t.push_str(&format!(" duration=\"{}\"", attr_value(text)));
-                    }
-                    if !a.indicators.is_empty() {
-                        let names: Vec<&str> = a
-                            .indicators
-                            .iter()
-                            .map(|r| src.get(r.clone()).unwrap_or("").trim())
-                            .collect();
-                        t.push_str(&format!(" indicator=\"{}\"", attr_value(&names.join(","))));
-                    }
-                    (t, format!("reference name=\"{}\"", attr_value(&a.action)))
-                })
-                .collect()
-        })
-        .collect();
+                .map(|r| src.get(r.clone()).unwrap_or("").trim())
+                .collect();
+            t.push_str(&format!(" indicator=\"{}\"", attr_value(&names.join(","))));
+        }
+        (t, format!("reference name=\"{}\"", attr_value(&a.action)))
+    });
 
     // <pou><actions><action name=..><body><ST>..</ST></body></action>...</actions></pou>
     let actions: Vec<Element> = tc
@@ -210,43 +201,24 @@ pub fn lower(
             TextCondition::Instructions(r) => text_element(&arena, "IL", src, r.clone()),
         })
         .collect();
-    let assocs: Vec<Vec<Element>> = tc
-        .steps
-        .iter()
-        .zip(&assoc_tags)
-        .map(|(s, tags)| {
-            s.associations
-                .iter()
-                .zip(tags)
-                .map(|(a, (tag, rtag))| {
-                    let mut el = element("action", tag, a.range.clone());
-                    el.children = arena.slice(vec![element(
-                        "reference",
-                        rtag,
-                        a.range.start..a.range.start,
-                    )]);
-                    el
-                })
-                .collect()
-        })
-        .collect();
+    let assocs: Vec<Vec<Element>> = per_association(&tc.steps, |(k, j), a| {
+        let (tag, rtag) = &assoc_tags[k][j];
+        let mut el = element("action", tag, a.range.clone());
+        el.children = arena.slice(vec![element(
+            "reference",
+            rtag,
+            a.range.start..a.range.start,
+        )]);
+        el
+    });
 
     // a step action's element holds the name of the action it runs (as an XML chart's attribute)
-    let vendor_names: Vec<Vec<Option<Element>>> = tc
-        .steps
-        .iter()
-        .map(|s| {
-            s.associations
-                .iter()
-                .map(|a| {
-                    vendor_kind(&a.qualifier).map(|_| {
-                        let r = a.range.start..a.range.start + a.action.len();
-                        text_element(&arena, "attribute", src, r)
-                    })
-                })
-                .collect()
+    let vendor_names: Vec<Vec<Option<Element>>> = per_association(&tc.steps, |_, a| {
+        vendor_kind(&a.qualifier).map(|_| {
+            let r = a.range.start..a.range.start + a.action.len();
+            text_element(&arena, "attribute", src, r)
         })
-        .collect();
+    });
     let span = |r: &Range<usize>| Span::new(file, r.start, r.end);
     let steps: Vec<Step> = tc
         .steps
@@ -390,4 +362,22 @@ fn body_lang(src: &str, r: &Range<usize>) -> &'static str {
     } else {
         "IL"
     }
+}
+
+/// `f` of each step's associations, in the chart's order, given (step, association) indices.
+fn per_association<'s, T>(
+    steps: &'s [sfc::TextStep],
+    mut f: impl FnMut((usize, usize), &'s sfc::TextAssociation) -> T,
+) -> Vec<Vec<T>> {
+    steps
+        .iter()
+        .enumerate()
+        .map(|(k, s)| {
+            s.associations
+                .iter()
+                .enumerate()
+                .map(|(j, a)| f((k, j), a))
+                .collect()
+        })
+        .collect()
 }
