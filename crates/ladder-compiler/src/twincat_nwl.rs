@@ -637,7 +637,7 @@ impl Lowering {
                 None => None,
             },
             "BoxTreeBox" => {
-                let call = string(node, "CallType").unwrap_or_default();
+                let call = call_type(node);
                 if BOOLEAN_OPERATORS.contains(&call.as_str()) {
                     Some("BOOL".into())
                 } else {
@@ -955,7 +955,7 @@ impl Lowering {
     /// outputs written; the value that flows to its parent, if one does.
     fn boxed(&mut self, node: &Element) -> Res<Option<Value>> {
         let box_type = string(node, "BoxType").unwrap_or_default();
-        let call = string(node, "CallType").unwrap_or_default();
+        let call = call_type(node);
         let at = prop(node, "BoxType").map_or(node.tag_start(), |e| e.tag_start());
         let en = string(node, "EN").as_deref() == Some("true");
         if let Some(f) = prop(node, "Flags").and_then(|f| string(f, "Flags")) {
@@ -1486,6 +1486,29 @@ fn operator_type(node: &Element, call: &str) -> Option<String> {
         .map(|o| string(o, "Type").unwrap_or_default());
     let first = types.next()?;
     (!first.trim().is_empty() && types.all(|t| t == first)).then_some(first)
+}
+
+/// A box's call type, a comparison's long name as TwinCAT 3.1.4022 writes it (`Greater`, `Equal`
+/// beside BoxType `>`, `=`) read as the short one later versions write (`Gt`, `Eq`), when the box's
+/// type names the same comparison (its symbol or IEC name).
+fn call_type(node: &Element) -> String {
+    let call = string(node, "CallType").unwrap_or_default();
+    let (short, symbol, iec) = match call.as_str() {
+        "Greater" => ("Gt", ">", "GT"),
+        "GreaterEqual" | "GreaterOrEqual" => ("Ge", ">=", "GE"),
+        "Equal" => ("Eq", "=", "EQ"),
+        "NotEqual" | "Unequal" => ("Ne", "<>", "NE"),
+        "LessEqual" | "LessOrEqual" => ("Le", "<=", "LE"),
+        "Less" => ("Lt", "<", "LT"),
+        _ => return call,
+    };
+    let box_type = string(node, "BoxType").unwrap_or_default();
+    let box_type = box_type.trim();
+    if box_type == symbol || box_type.eq_ignore_ascii_case(iec) {
+        short.to_string()
+    } else {
+        call
+    }
 }
 
 /// Operators whose result is BOOL.

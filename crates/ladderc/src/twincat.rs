@@ -314,9 +314,6 @@ fn missing_object(file: FileId, path: &Path, include: (usize, usize)) -> Diagnos
     .with_hint("restore the file (e.g. from version control), or remove its `<Compile>` element from the project; the other files are checked as usual")
 }
 
-/// The object files a `.plcproj` lists (`<Compile Include="POUs\MAIN.TcPOU">`), relative to its
-/// folder, in its order, each with the byte range of its `Include` value in `text`; the other items
-/// (visualisations, text lists) are left out.
 /// `text` with MSBuild's `%XX` escapes (two hexadecimal digits, a byte) decoded; other text as it
 /// is (a `%` not followed by two hexadecimal digits stays).
 fn msbuild_unescape(text: &str) -> String {
@@ -338,6 +335,11 @@ fn msbuild_unescape(text: &str) -> String {
     String::from_utf8(out).unwrap_or_else(|_| text.to_string())
 }
 
+/// The object files a `.plcproj` lists (`<Compile Include="POUs\MAIN.TcPOU">`), relative to its
+/// folder, in its order, each with the byte range of its `Include` value in `text`; the other items
+/// (visualisations, text lists) are left out, and so is an object excluded from the build
+/// (`<ExcludeFromBuild>true</ExcludeFromBuild>`: CODESYS "Properties: Build", the object is not
+/// compiled).
 pub(crate) fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, usize))> {
     let dir = project.parent().unwrap_or(Path::new(""));
     let arena = ladder_compiler::xml::Arena::new();
@@ -353,6 +355,12 @@ pub(crate) fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, 
         let Some((include, range)) = el.attr_and_range("Include") else {
             continue;
         };
+        if el
+            .child("ExcludeFromBuild")
+            .is_some_and(|x| x.text().trim().eq_ignore_ascii_case("true"))
+        {
+            continue;
+        }
         // MSBuild escapes special characters in item paths (`XTS %28Do Not Edit%29\\X.TcPOU`)
         let include = msbuild_unescape(include);
         let rel: PathBuf = include.split(['\\', '/']).collect();
@@ -366,7 +374,8 @@ pub(crate) fn listed_files(project: &Path, text: &str) -> Vec<(PathBuf, (usize, 
 /// The configuration that runs a TwinCAT project's programs: from its tasks, else the one PROGRAM
 /// or `MAIN`. `units` are all units read; `twincat` says which came from TwinCAT object files;
 /// `failed` names the object files that could not be read (a task calling one is not reported again).
-/// A task's call of a library program (`VisuElems.Visu_Prg`, TwinCAT's visualisation) is left out.
+/// A task's call of a library program (`VisuElems.Visu_Prg`, TwinCAT's visualisation; `VISU_PRG`
+/// of a task `VISU_TASK` where no file declares it, as 3.1.4022 writes it) is left out.
 /// Returns the base cycle in ms when tasks give one. Nothing is added when a unit already has a
 /// CONFIGURATION. A library's project (`library_projects` names those read) has no task and no
 /// program to choose: its programs are compiled, with one note (W1434), and none is configured.
@@ -478,6 +487,14 @@ pub fn configure(
                 }
                 let known =
                     safe_name(name).filter(|n| all_programs.contains(&n.to_ascii_uppercase()));
+                // TwinCAT 3.1.4022's visualisation task calls `VISU_PRG`, which the
+                // visualisation manager generates (later versions write `VisuElems.Visu_Prg`)
+                if known.is_none()
+                    && t.name.eq_ignore_ascii_case("VISU_TASK")
+                    && name.eq_ignore_ascii_case("VISU_PRG")
+                {
+                    continue;
+                }
                 let Some(program) = known else {
                     session.diags.push(
                         Diagnostic::error(
