@@ -374,21 +374,40 @@ fn rewrite_calls(
                     {
                         continue;
                     }
+                    // a property's accessor is named by the property (never `__GET_P`)
+                    let what = crate::st::property::describe_action(&a.name.name);
+                    let accessor = crate::st::property::is_accessor(&a.name.name);
+                    let prop = a.name.name.get(crate::st::property::GET_PREFIX.len()..);
+                    let (label, declared, hint) = match prop {
+                        Some(p) if accessor => (
+                            "property of a program",
+                            "property declared here",
+                            format!(
+                                "use `{p}` from `{}` itself, or give the program one instance",
+                                a.pou.name
+                            ),
+                        ),
+                        _ => (
+                            "action of a program",
+                            "action declared here",
+                            format!(
+                                "call it from `{}` itself (`{}();`), or give the program one instance",
+                                a.pou.name, a.name.name
+                            ),
+                        ),
+                    };
                     diags.push(
                         Diagnostic::error(
                             code::E3135,
                             format!(
-                                "action `{}` of program `{}` cannot be called here: {why}",
-                                a.name.name, a.pou.name
+                                "{what} of program `{}` cannot be called here: {why}",
+                                a.pou.name
                             ),
                         )
                         .at(instance.span)
-                        .with_primary_label("action of a program")
-                        .with_label(a.name.span, "action declared here")
-                        .with_hint(format!(
-                            "call it from `{}` itself (`{}();`), or give the program one instance",
-                            a.pou.name, a.name.name
-                        )),
+                        .with_primary_label(label)
+                        .with_label(a.name.span, declared)
+                        .with_hint(hint),
                     );
                 }
             }

@@ -794,6 +794,98 @@ impl<'s, 'd> Parser<'s, 'd> {
         false
     }
 
+    /// Whether the current token is the `S` or `R` of an ExST set or reset assignment (`S=`, `R=`).
+    fn at_set_reset(&self) -> bool {
+        self.set_reset_at(0).is_some()
+    }
+
+    /// `Some(true)` for `S=`, `Some(false)` for `R=` at `n` tokens from the current one.
+    fn set_reset_at(&self, n: usize) -> Option<bool> {
+        let k = (self.pos + n).min(self.toks.len() - 1);
+        let t = &self.toks[k];
+        if t.tok != Tok::Ident || *self.peek_at(n + 1) != Tok::Eq {
+            return None;
+        }
+        let text = self.text(t);
+        if text.eq_ignore_ascii_case("S") {
+            Some(true)
+        } else if text.eq_ignore_ascii_case("R") {
+            Some(false)
+        } else {
+            None
+        }
+    }
+
+    /// Whether the tokens from the current one are a place followed by `S=` or `R=` (the `b R=`
+    /// of `a S= b R= c;`); looks at most [`MAX_PLACE_LOOKAHEAD`] tokens ahead.
+    fn at_place_then_set_reset(&self) -> bool {
+        if !matches!(self.peek(), Tok::Ident | Tok::Address(..)) {
+            return false;
+        }
+        let mut depth = 0usize;
+        for i in 1..MAX_PLACE_LOOKAHEAD {
+            match self.peek_at(i) {
+                Tok::Ident if depth == 0 && self.set_reset_at(i).is_some() => return true,
+                Tok::LBracket => depth += 1,
+                Tok::RBracket if depth > 0 => depth -= 1,
+                Tok::Dot | Tok::Caret | Tok::Int(_) => {}
+                Tok::Ident if depth == 0 && matches!(self.peek_at(i - 1), Tok::Dot) => {}
+                Tok::Semi | Tok::Eof => return false,
+                _ if depth > 0 => {}
+                _ => return false,
+            }
+        }
+        false
+    }
+
+    /// `a S= b R= c;` from its `S`/`R` (CODESYS and TwinCAT ExST, Infosys "ExST assignment S=" /
+    /// "R="): every place of the chain takes the operand at the end of the line, which is
+    /// evaluated once: a place after `S=` becomes TRUE when it is TRUE, one after `R=` FALSE;
+    /// when it is FALSE nothing is written. Read as `IF c THEN b := FALSE; a := TRUE; END_IF`
+    /// (the innermost assignment first, as `a := b := e` is read).
+    fn set_reset_assign(&mut self, target: Place) -> Option<StmtKind> {
+        let mut chain = Vec::new();
+        let mut place = target;
+        loop {
+            let set = self.set_reset_at(0)?;
+            self.bump();
+            self.bump();
+            chain.push((place, set));
+            if chain.len() >= MAX_ASSIGN_CHAIN || !self.at_place_then_set_reset() {
+                break;
+            }
+            place = self.place()?;
+        }
+        let cond = self.expr();
+        if matches!(cond.kind, ExprKind::Error) {
+            return None;
+        }
+        let start = chain.first().map_or(cond.span, |(p, _)| p.span);
+        let span = start.to(cond.span);
+        let body = chain
+            .into_iter()
+            .rev()
+            .map(|(target, set)| {
+                let value = Expr {
+                    kind: ExprKind::Literal(Literal {
+                        kind: LiteralKind::Bool(set),
+                        type_prefix: None,
+                        span: target.span,
+                    }),
+                    span: target.span,
+                };
+                Stmt {
+                    span: target.span.to(cond.span),
+                    kind: StmtKind::Assign { target, value },
+                }
+            })
+            .collect();
+        Some(StmtKind::If {
+            branches: vec![CondBranch { cond, body, span }],
+            else_body: None,
+        })
+    }
+
     /// `x := e`, `inst(...)`, `F(...)`; anything else that starts with a name is reported here.
     fn assign_or_call(&mut self) -> Option<StmtKind> {
         let target = self.place()?;
@@ -834,6 +926,9 @@ impl<'s, 'd> Parser<'s, 'd> {
                     args,
                 })
             }
+            // `x S= c;`, `x R= c;`, `a S= b R= c;` (CODESYS, TwinCAT ExST set and reset
+            // assignments)
+            Tok::Ident if self.at_set_reset() => self.set_reset_assign(target),
             // `r REF= x` (CODESYS, TwinCAT): `r`, a REFERENCE TO, now refers to `x` (lowered by
             // `PouLowering`, see `super::refs::REF_ASSIGN`)
             Tok::Ident if self.ident(self.cur()).is("REF") && *self.peek_at(1) == Tok::Eq => {

@@ -321,6 +321,9 @@ struct Prop {
 enum At {
     Base,
     Field(usize),
+    /// `PRG.P` inside program `PRG` (or its actions and methods): the program's own property
+    /// named through the program's name, its first accessor.
+    Own,
 }
 
 /// The rewriting of one statement (see [`rewrite`]).
@@ -398,6 +401,7 @@ impl Rewriter<'_, '_> {
     fn writes_through(&self, p: &Place, at: At, name: &Ident) -> bool {
         let next = match at {
             At::Base => 0,
+            At::Own => 1,
             At::Field(k) => k + 1,
         };
         if matches!(p.accessors.get(next), Some(Accessor::Deref(_))) {
@@ -408,7 +412,7 @@ impl Rewriter<'_, '_> {
             name.span,
         );
         let ty = match at {
-            At::Base => self.env.var_type(&result),
+            At::Base | At::Own => self.env.var_type(&result),
             At::Field(k) => {
                 let prefix = Place {
                     base: p.base.clone(),
@@ -436,6 +440,18 @@ impl Rewriter<'_, '_> {
         if let PlaceBase::Name(n) = &p.base {
             if let Some(pr) = self.own_prop(n) {
                 return Some((At::Base, pr, n.clone()));
+            }
+            // `PRG.P := v;` inside program `PRG`: its own property, the accessors of the running
+            // instance (CODESYS and TwinCAT accept the qualified name anywhere)
+            if let (Some(Accessor::Field(f)), true) = (
+                p.accessors.first(),
+                self.env.pou_kind == crate::ast::PouKind::Program
+                    && n.is(&self.env.pou_name.name)
+                    && !self.env.vars.contains_key(&n.key()),
+            ) {
+                if let Some(pr) = self.own_prop(f) {
+                    return Some((At::Own, pr, f.clone()));
+                }
             }
         }
         for (k, a) in p.accessors.iter().enumerate() {
@@ -473,6 +489,15 @@ impl Rewriter<'_, '_> {
                 base: PlaceBase::Name(Ident::new(m, span)),
                 accessors: if keep_rest {
                     p.accessors.clone()
+                } else {
+                    Vec::new()
+                },
+                span: p.span,
+            },
+            At::Own => Place {
+                base: PlaceBase::Name(Ident::new(m, span)),
+                accessors: if keep_rest {
+                    p.accessors[1..].to_vec()
                 } else {
                     Vec::new()
                 },
@@ -667,6 +692,7 @@ impl Rewriter<'_, '_> {
                 if let Some((at, prop, name)) = self.find(target) {
                     let whole = match at {
                         At::Base => target.accessors.is_empty(),
+                        At::Own => target.accessors.len() == 1,
                         At::Field(k) => k + 1 == target.accessors.len(),
                     };
                     if !whole && self.writes_through(target, at, &name) {

@@ -59,6 +59,27 @@ impl PouLowering<'_> {
         (!known).then_some(t)
     }
 
+    /// The name `p` starts with (`cell` of `cell.Units[1].Home()`) when it names nothing: no
+    /// variable, global, global list, POU, type or action (a call right after it, `Get(1).x`, is
+    /// the block's own method or a function, and is left alone).
+    pub(super) fn undeclared_root(&self, p: &Place) -> Option<Ident> {
+        let (PlaceBase::Name(n), [Accessor::Field(_) | Accessor::Index(_), ..]) =
+            (&p.base, p.accessors.as_slice())
+        else {
+            return None;
+        };
+        let key = n.key();
+        let known = n.name.starts_with("__")
+            || self.env().var_type(n).is_some()
+            || self.decls.global_lists.contains_key(&key)
+            || self.decls.pou(&n.name).is_some()
+            || self.decls.types.contains_key(&key)
+            || self.actions.contains_key(&key)
+            || self.il_actions.contains_key(&key)
+            || self.methods.contains_key(&key);
+        (!known).then(|| n.clone())
+    }
+
     /// Replaces every call inside `p` (left to right) by a temporary holding its result; the
     /// calls and the bindings go to `calls`. `false` (after one E0349) when a call is no method
     /// call or its result cannot be accessed.
@@ -68,6 +89,13 @@ impl PouLowering<'_> {
         calls: &mut Vec<Stmt>,
         diags: &mut Diagnostics,
     ) -> bool {
+        if let Some(n) = self.undeclared_root(p) {
+            // `ip.Movers[1].Cmd.Home().Done` with `ip` declared nowhere: nothing is known of the
+            // chain; the place is read as the name alone, so that sema reports the undeclared name
+            // (E1001, once per POU at its first use) and nothing else
+            *p = name_place(n);
+            return true;
+        }
         while let Some(k) = p
             .accessors
             .iter()
@@ -118,6 +146,16 @@ impl PouLowering<'_> {
                         );
                     }
                     return false;
+                }
+                if let PlaceBase::Name(n) = &callee.base {
+                    // `cell.A().x` with `cell` declared nowhere reads as a library's function
+                    // `Lib.A` (`__ll_A`, `super::super::qualifiers`): E1032 named `cell` already
+                    if n.name.starts_with("__")
+                        && callee.accessors.is_empty()
+                        && diags.iter().any(|d| d.code == code::E1032)
+                    {
+                        return false;
+                    }
                 }
                 diags.push(
                     Diagnostic::error(

@@ -208,6 +208,28 @@ impl PouLowering<'_> {
         let mut calls = Vec::new();
         let mut rest = s.clone();
         self.keep_earlier_results(&mut rest, &mut calls);
+        // `cell.Units[2].Cmd.Move(1, 2).Go();` with `cell` declared nowhere: read as `cell :=
+        // cell;`, so that sema reports the undeclared name once (E1001), not a call of it
+        if let StmtKind::Call { callee, .. } = &rest.kind {
+            if let Some(n) = super::call_chain::is_chain(callee)
+                .then(|| self.undeclared_root(callee))
+                .flatten()
+            {
+                let root = Place {
+                    span: n.span,
+                    base: PlaceBase::Name(n),
+                    accessors: Vec::new(),
+                };
+                rest.kind = StmtKind::Assign {
+                    value: Expr {
+                        span: root.span,
+                        kind: ExprKind::Place(root.clone()),
+                    },
+                    target: root,
+                };
+                return Some((calls, rest));
+            }
+        }
         // a chain in the place written or called: its calls first (`list.Item(2).Value := 5;`)
         if let StmtKind::Assign { target: p, .. } | StmtKind::Call { callee: p, .. } =
             &mut rest.kind
