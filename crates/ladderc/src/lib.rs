@@ -75,6 +75,7 @@ pub mod motion_in_struct;
 pub mod motion_link;
 pub mod nc_axes;
 pub mod openplc_v4;
+pub mod openplc_v4_json;
 pub mod openplc_v4_ld;
 pub mod output;
 pub mod pipeline;

@@ -3,7 +3,9 @@
 //! `pous/` (`pous/programs/main.st`, `pous/function-blocks/Counter.st`, ...).
 //!
 //! Input: the command line's paths and the [`Session`] (its overlay, and the file system when
-//! allowed). Output: the paths with each such folder replaced by its POU files (sorted, at most
+//! allowed). Output: the paths with each such folder replaced by its POU files, or by its
+//! `project.json` when the POUs are inline there (`crate::openplc_v4_json`; a `project.json` given
+//! alone without inline POUs stands for its folder) (sorted, at most
 //! [`MAX_FILES`], at most [`MAX_DEPTH`] folders down; a `.ld` among them is read as when given
 //! alone (`crate::openplc_v4_ld`), an `.fbd` JSON body is one E1073), and the configuration that `project.json` describes (its tasks,
 //! program instances and global variables) written as Structured Text, one [`V4Config`] per folder.
@@ -32,6 +34,8 @@ pub struct V4Config {
     pub name: String,
     /// `VAR_GLOBAL ... END_VAR` and `CONFIGURATION ... END_CONFIGURATION`.
     pub text: String,
+    /// The `project.json` it is read from.
+    pub source: PathBuf,
 }
 
 /// Whether `dir` is an OpenPLC Editor v4 project folder: a `project.json` whose `meta.type` is
@@ -56,13 +60,39 @@ pub fn expand(
 ) -> Vec<PathBuf> {
     let mut out = Vec::new();
     for p in paths {
-        let Some(json) = project_json(session, p) else {
-            out.push(p.clone());
-            continue;
+        // a project.json given alone: its inline POUs, or (none inline) its folder's POU files
+        let (dir, json) = match project_json(session, p) {
+            Some(json) => (p.clone(), json),
+            None => match json_file(session, p) {
+                Some(json) if has_inline_pous(&json) => {
+                    out.push(p.clone());
+                    push_config(&json, p, configs, diags);
+                    continue;
+                }
+                Some(json) => match p.parent() {
+                    Some(dir) if has_pou_files(dir) => (dir.to_path_buf(), json),
+                    _ => {
+                        out.push(p.clone());
+                        continue;
+                    }
+                },
+                None => {
+                    out.push(p.clone());
+                    continue;
+                }
+            },
         };
+        let p = &dir;
         let mut files = Vec::new();
         pou_files(&p.join("pous"), 0, &mut files);
         files.sort();
+        // the editor's earlier projects keep their POUs in project.json (`data.pous[].data`)
+        if files.is_empty() && has_inline_pous(&json) {
+            let file = p.join("project.json");
+            out.push(file.clone());
+            push_config(&json, &file, configs, diags);
+            continue;
+        }
         if files.is_empty() {
             diags.push(
                 Diagnostic::error(
@@ -74,12 +104,50 @@ pub fn expand(
             continue;
         }
         out.extend(files);
-        let name = format!("{} [configuration]", p.join("project.json").display());
-        if let Some(text) = configuration(&json, &p.join("project.json"), diags) {
-            configs.push(V4Config { name, text });
-        }
+        push_config(&json, &p.join("project.json"), configs, diags);
     }
     out
+}
+
+/// The configuration of the project `json` (read from `file`) into `configs`.
+fn push_config(json: &Value, file: &Path, configs: &mut Vec<V4Config>, diags: &mut Diagnostics) {
+    let name = format!("{} [configuration]", file.display());
+    if let Some(text) = configuration(json, file, diags) {
+        configs.push(V4Config {
+            name,
+            text,
+            source: file.to_path_buf(),
+        });
+    }
+}
+
+/// The project of a `.json` file `p` (from the overlay or the file system) that is an OpenPLC
+/// Editor v4 `project.json`.
+fn json_file(session: &Session, p: &Path) -> Option<Value> {
+    if !p
+        .extension()
+        .is_some_and(|x| x.eq_ignore_ascii_case("json"))
+    {
+        return None;
+    }
+    let text = session.read_file(p).ok()?;
+    let v: Value = serde_json::from_str(text.strip_prefix('\u{feff}').unwrap_or(&text)).ok()?;
+    crate::openplc_v4_json::is_v4_project(&v).then_some(v)
+}
+
+/// Whether the project holds POUs in `data.pous`.
+fn has_inline_pous(json: &Value) -> bool {
+    json.get("data")
+        .and_then(|d| d.get("pous"))
+        .and_then(Value::as_array)
+        .is_some_and(|a| !a.is_empty())
+}
+
+/// Whether the folder `dir` has POU files under `pous/`.
+fn has_pou_files(dir: &Path) -> bool {
+    let mut files = Vec::new();
+    pou_files(&dir.join("pous"), 0, &mut files);
+    !files.is_empty()
 }
 
 /// The POU files under `dir`, `depth` folders down.
@@ -110,7 +178,7 @@ fn pou_files(dir: &Path, depth: usize, out: &mut Vec<PathBuf>) {
 }
 
 /// An IEC 61131-3 identifier.
-fn is_name(s: &str) -> bool {
+pub(crate) fn is_name(s: &str) -> bool {
     let mut c = s.chars();
     c.next()
         .is_some_and(|f| f.is_ascii_alphabetic() || f == '_')
@@ -131,7 +199,7 @@ fn is_duration(s: &str) -> bool {
 }
 
 /// A direct address (`%IX0.0`, `%QW2`, `%MD10`).
-fn is_address(s: &str) -> bool {
+pub(crate) fn is_address(s: &str) -> bool {
     let Some(rest) = s.strip_prefix('%') else {
         return false;
     };
@@ -143,7 +211,7 @@ fn is_address(s: &str) -> bool {
 
 /// An initial value's text kept as it is: a number, a name, a typed literal, a duration or a
 /// quoted string without quotes, comments or statement ends inside.
-fn is_literal(s: &str) -> bool {
+pub(crate) fn is_literal(s: &str) -> bool {
     let t = s.trim();
     if let Some(inner) = t.strip_prefix('\'').and_then(|x| x.strip_suffix('\'')) {
         return !inner.contains(['\'', '\n', '\r']) && inner.len() <= 254;
@@ -157,7 +225,7 @@ fn is_literal(s: &str) -> bool {
 
 /// The type of a global variable entry (`{"definition": "base-type", "value": "INT"}`, an
 /// `array` with `data.baseType` and `data.dimensions`), as ST text.
-fn type_text(ty: &Value) -> Option<String> {
+pub(crate) fn type_text(ty: &Value) -> Option<String> {
     let value = ty.get("value").and_then(Value::as_str).unwrap_or("");
     match ty.get("definition").and_then(Value::as_str)? {
         "array" => {

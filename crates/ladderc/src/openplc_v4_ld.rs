@@ -905,7 +905,7 @@ fn closer(decls: &str) -> &'static str {
 
 /// Writes `word` into the first run of blanks of `bytes[from..to]` that holds it with a blank on
 /// each side; the offset after it.
-fn place(bytes: &mut [u8], from: usize, to: usize, word: &str) -> Option<usize> {
+pub(crate) fn place(bytes: &mut [u8], from: usize, to: usize, word: &str) -> Option<usize> {
     let need = word.len() + 2;
     let to = to.min(bytes.len());
     let mut run = 0;

@@ -272,6 +272,7 @@ impl Session {
         // OpenPLC Editor v4: a folder holding project.json stands for its POU files, and its
         // configuration (tasks, instances, globals) is read as one more ST text below
         let mut v4_configs = Vec::new();
+        let mut failed_json: Vec<PathBuf> = Vec::new();
         let paths = crate::openplc_v4::expand(self, paths, &mut v4_configs, &mut expand_diags);
         let paths = crate::twincat::expand(
             self,
@@ -452,6 +453,29 @@ impl Session {
             }
             // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
             let src = &self.map.get(file).text;
+            // an OpenPLC Editor v4 project.json with its POUs inline, read as ST; a `.json` input
+            // (or a text that is a JSON object) is never read as ST otherwise
+            let json_text = if p
+                .extension()
+                .is_some_and(|x| x.eq_ignore_ascii_case("json"))
+                || (detected && crate::openplc_v4_json::is_json_object(src))
+            {
+                let shown = &self.map.get(file).name;
+                match crate::openplc_v4_json::read(file, src, shown, &mut self.diags) {
+                    Some(text) => Some(text),
+                    None => {
+                        failed_json.push(p.clone());
+                        continue;
+                    }
+                }
+            } else {
+                None
+            };
+            let (file_lang, detected) = if json_text.is_some() {
+                (Lang::St, false)
+            } else {
+                (file_lang, detected)
+            };
             // a CODESYS V2.3 export (`.EXP`): its sections without code skipped (W1442), its task
             // configuration read as the project's tasks
             let v23_text = if detected && file_lang != Lang::Xml {
@@ -533,7 +557,13 @@ impl Session {
             };
             let (file_lang, src) = match (&v2_text, &tc_text) {
                 (Some(text), _) | (None, Some(text)) => (Lang::St, text.as_str()),
-                (None, None) => (file_lang, v23_text.as_deref().unwrap_or(src.as_str())),
+                (None, None) => (
+                    file_lang,
+                    json_text
+                        .as_deref()
+                        .or(v23_text.as_deref())
+                        .unwrap_or(src.as_str()),
+                ),
             };
             if file_lang == Lang::Xml && defer_xml {
                 deferred_xml.push((units.len(), file, beremiz_dir.clone()));
@@ -611,7 +641,8 @@ impl Session {
                             .clone()
                             .or_else(|| tc_text.clone())
                             .or_else(|| v23_text.clone())
-                            .or_else(|| ld_text.clone()),
+                            .or_else(|| ld_text.clone())
+                            .or_else(|| json_text.clone()),
                         own: il_frontend::parser::integer_constants(&unit, &local, true),
                         diags: local,
                     });
@@ -667,6 +698,10 @@ impl Session {
         }
         crate::text_lists::name_text_lists(&mut units, &text_lists);
         for c in v4_configs {
+            // (the configuration of a project.json whose POUs were not read would name them)
+            if failed_json.contains(&c.source) {
+                continue;
+            }
             let file = self.map.add_file_owned(c.name, c.text);
             let mut local = Diagnostics::new();
             let (unit, bodies, _) = il_frontend::st::file::parse_text(
