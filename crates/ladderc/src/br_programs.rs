@@ -56,6 +56,8 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
         }
     }
     let mut removals = Vec::new();
+    // the `.var` files that became a program's variables: their W0018 is withdrawn (W0020 says it)
+    let mut own_files = Vec::new();
     let with_parts: Vec<PathBuf> = folders.keys().cloned().collect();
     for (dir, parts) in folders {
         // one of each part (two `_CYCLIC` in one folder: the checks' E1002)
@@ -90,6 +92,7 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
                 if !is_var || dir_of(file) != dir {
                     return true;
                 }
+                own_files.push(file);
                 blocks.push(VarBlock {
                     name: None,
                     kind: VarKind::Local,
@@ -186,6 +189,7 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
     for (u, i) in removals.into_iter().rev() {
         units[u].items.remove(i);
     }
+    diags.retain(|d| d.code != code::W0018 || !d.span.is_some_and(|s| own_files.contains(&s.file)));
     drop_codeless_programs(units, map, &with_parts, &mut dir_of, diags);
 }
 
@@ -246,10 +250,92 @@ fn drop_codeless_programs(
     }
 }
 
+/// The data types two or more B&R program folders (each holds `IEC.prg`) declare alike in their
+/// `.typ` files (`Private="true"`, Automation Studio's "Local data types": each program sees its
+/// own): the same declaration written in each folder (a program copied to another folder), kept
+/// once, as it means the same in every program (before round 25: E1002 "declared twice").
+/// Declarations of one name that differ stay the checks' E1002 (ladderc keeps one namespace of
+/// types). Runs before the bodies are compiled.
+pub fn share_private_types(units: &mut [CompilationUnit], map: &SourceMap) {
+    let dir = |file: diagnostics::FileId| -> Option<PathBuf> {
+        let name = Path::new(&map.get(file).name);
+        if !name
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("typ"))
+        {
+            return None;
+        }
+        let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
+        let dir = path.parent()?.to_path_buf();
+        dir.join("IEC.prg").is_file().then_some(dir)
+    };
+    // the declaration without its places, to compare two of them
+    fn shape(t: &il_frontend::ast::TypeDecl) -> serde_json::Value {
+        fn strip(v: &mut serde_json::Value) {
+            match v {
+                serde_json::Value::Object(m) => {
+                    m.remove("span");
+                    m.values_mut().for_each(strip);
+                }
+                serde_json::Value::Array(a) => a.iter_mut().for_each(strip),
+                _ => {}
+            }
+        }
+        let mut v = serde_json::to_value(t).unwrap_or_default();
+        strip(&mut v);
+        v
+    }
+    // by upper-case name: (folder, unit, item, index in the item, shape)
+    type Seen = Vec<(PathBuf, usize, usize, usize, serde_json::Value)>;
+    let mut by_name: BTreeMap<String, Seen> = BTreeMap::new();
+    for (u, unit) in units.iter().enumerate() {
+        for (i, item) in unit.items.iter().enumerate() {
+            let LibraryElement::DataTypes(types) = item else {
+                continue;
+            };
+            for (k, t) in types.iter().enumerate() {
+                if let Some(d) = dir(t.name.span.file) {
+                    by_name
+                        .entry(t.name.key())
+                        .or_default()
+                        .push((d, u, i, k, shape(t)));
+                }
+            }
+        }
+    }
+    let mut drop: Vec<(usize, usize, usize)> = Vec::new();
+    for seen in by_name.values() {
+        let Some((first_dir, .., first)) = seen.first() else {
+            continue;
+        };
+        let alike = seen[1..]
+            .iter()
+            .all(|(d, .., s)| d != first_dir && s == first);
+        let folders: std::collections::BTreeSet<&PathBuf> = seen.iter().map(|s| &s.0).collect();
+        if seen.len() > 1 && alike && folders.len() == seen.len() {
+            drop.extend(seen[1..].iter().map(|&(_, u, i, k, _)| (u, i, k)));
+        }
+    }
+    drop.sort();
+    for &(u, i, k) in drop.iter().rev() {
+        if let Some(LibraryElement::DataTypes(types)) = units[u].items.get_mut(i) {
+            types.remove(k);
+        }
+    }
+    let mut items: Vec<(usize, usize)> = drop.iter().map(|&(u, i, _)| (u, i)).collect();
+    items.dedup();
+    for &(u, i) in items.iter().rev() {
+        if matches!(units[u].items.get(i), Some(LibraryElement::DataTypes(t)) if t.is_empty()) {
+            units[u].items.remove(i);
+        }
+    }
+}
+
 /// A B&R program folder's actions file (`Actions.st`: `ACTION Name : ... END_ACTION`, no POU):
 /// its actions become those of the folder's `_INIT`, `_CYCLIC` and `_EXIT` parts (inlined where
-/// they call them, before [`join`] makes one program of the parts). A file of actions in a folder
-/// with no such part keeps its E1060 (reported by `lone_members::attach`).
+/// they call them, before [`join`] makes one program of the parts); so are those of an actions file
+/// in a package the program folder lists in its `IEC.prg` (`<Object Type="Package">`). A file of
+/// actions in a folder with no such part keeps its E1060 (reported by `lone_members::attach`).
 pub fn attach_actions(
     units: &[CompilationUnit],
     pending: &mut Vec<il_frontend::st::file::PendingBody>,
@@ -270,21 +356,29 @@ pub fn attach_actions(
         if !actions_file {
             continue;
         }
-        let dir = folder(pb.file);
-        let parts: Vec<usize> = pending
-            .iter()
-            .enumerate()
-            .filter(|(_, q)| {
-                q.lone.is_none()
-                    && !q.sfc
-                    && q.pou_name(units)
-                        .is_some_and(|n| PARTS.iter().any(|p| n.name.eq_ignore_ascii_case(p)))
-                    && folder(q.file) == dir
-            })
-            .map(|(k, _)| k)
-            .collect();
-        if !parts.is_empty() {
-            taken.push((a, parts));
+        // its folder, or the program folder whose package (nested packages too) holds it
+        let mut dir = folder(pb.file);
+        loop {
+            let parts: Vec<usize> = pending
+                .iter()
+                .enumerate()
+                .filter(|(_, q)| {
+                    q.lone.is_none()
+                        && !q.sfc
+                        && q.pou_name(units)
+                            .is_some_and(|n| PARTS.iter().any(|p| n.name.eq_ignore_ascii_case(p)))
+                        && folder(q.file) == dir
+                })
+                .map(|(k, _)| k)
+                .collect();
+            if !parts.is_empty() {
+                taken.push((a, parts));
+                break;
+            }
+            match dir.parent() {
+                Some(up) if lists_package(up, &dir) => dir = up.to_path_buf(),
+                _ => break,
+            }
         }
     }
     for (a, parts) in taken.iter().rev() {
@@ -296,6 +390,38 @@ pub fn attach_actions(
     for (a, _) in taken.into_iter().rev() {
         pending.remove(a);
     }
+}
+
+/// Whether folder `dir`'s `IEC.prg` (a program) or `.pkg` file (a package) lists its sub-folder
+/// `sub` as a package (`<Object Type="Package">Name</Object>`): Automation Studio keeps a
+/// program's actions so (round 25, before: E1060 and an E1001 at each call).
+fn lists_package(dir: &Path, sub: &Path) -> bool {
+    let Some(name) = sub.file_name().and_then(|n| n.to_str()) else {
+        return false;
+    };
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return false;
+    };
+    entries.flatten().any(|e| {
+        let path = e.path();
+        let listing = path
+            .file_name()
+            .and_then(|n| n.to_str())
+            .is_some_and(|n| n.eq_ignore_ascii_case("IEC.prg"))
+            || path
+                .extension()
+                .is_some_and(|x| x.eq_ignore_ascii_case("pkg"));
+        listing
+            && std::fs::read_to_string(&path).is_ok_and(|text| {
+                text.split("<Object").skip(1).any(|o| {
+                    let Some((attrs, rest)) = o.split_once('>') else {
+                        return false;
+                    };
+                    attrs.contains("Type=\"Package\"")
+                        && rest.split('<').next().is_some_and(|n| n.trim() == name)
+                })
+            })
+    })
 }
 
 fn pou_at(units: &[CompilationUnit], u: usize, i: usize) -> Option<&Pou> {

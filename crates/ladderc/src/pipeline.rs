@@ -736,6 +736,8 @@ impl Session {
         }
         // B&R: a program folder's actions file belongs to the folder's program parts
         crate::br_programs::attach_actions(&units, &mut pending, &self.map);
+        // B&R: one type declared alike in several programs' private `.typ` files is kept once
+        crate::br_programs::share_private_types(&mut units, &self.map);
         // B&R: a block declared in a `.fun` file and implemented in a `.st` one is one block
         let fun_files: Vec<diagnostics::FileId> = self
             .map

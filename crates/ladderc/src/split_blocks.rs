@@ -10,7 +10,7 @@
 //! ladderc's own blocks stand for the standard names, a use of another is reported where it is
 //! made. Invariants: only pairs of one kind, in two files, where exactly one has no statement (no
 //! IL instruction and an ST body without a token) are joined; every other duplicate stays the
-//! checks' E1002; no declaration without statements becomes an empty block. Runs before the
+//! checks' E1002, but for `.fun` stubs of one name none of which has statements (all skipped); no declaration without statements becomes an empty block. Runs before the
 //! bodies are compiled, so the statements are lowered knowing the declarations.
 
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
@@ -89,7 +89,10 @@ pub fn join(
     // (`operator`, `standard`, `AsIecCon`: ADD, TON, INT_TO_REAL ... declared without statements),
     // not compiled (an empty body would stand silently for the block: a TON that never times, an
     // ADD that gives 0); ladderc's own standard functions and blocks stand for the standard names,
-    // a use of any other is an unknown function or type at that use; one note W0021 per file
+    // a use of any other is an unknown function or type at that use; one note W0021 per file.
+    // Two such stubs of one name (B&R's `runtime.fun` `r_trig` and `standard.fun` `R_TRIG`: one
+    // standard block, B&R's names being case-sensitive) are both stubs, not a duplicate (before
+    // round 25: W1446 and E1002)
     let mut skipped: Vec<(diagnostics::FileId, diagnostics::Span, Vec<String>)> = Vec::new();
     for (u, unit) in units.iter().enumerate() {
         for (i, item) in unit.items.iter().enumerate() {
@@ -99,8 +102,14 @@ pub fn join(
             if !matches!(p.kind, PouKind::FunctionBlock | PouKind::Function)
                 || !is_fun(p.name.span.file)
                 || removals.contains(&(u, i))
-                || by_name.get(&p.name.key()).is_some_and(|v| v.len() > 1)
                 || !no_statement(p, pending)
+                || !by_name.get(&p.name.key()).is_some_and(|v| {
+                    v.iter().all(|&at| {
+                        pou(units, at).is_some_and(|q| {
+                            q.kind == p.kind && is_fun(q.name.span.file) && no_statement(q, pending)
+                        })
+                    })
+                })
             {
                 continue;
             }

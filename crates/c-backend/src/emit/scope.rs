@@ -1023,11 +1023,13 @@ fn part_mask(width: u32) -> String {
     }
 }
 
-/// Whether `name` is a temporary of the ST lowering (`_ST_T3`, `_STX_T1` inside LD/FBD, `_ITF_T2`;
-/// see `il_frontend::st::lower`).
+/// Whether `name` is a temporary of the ST lowering (`_ST_T3`, `_STX_T1` inside LD/FBD, `_ITF_T2`,
+/// `_ST_INIT_T1` in a B&R program's `_INIT`; see `il_frontend::st::lower`).
 fn is_temporary(name: &str) -> bool {
-    ["_ST_T", "_STX_T", "_ITF_T"].iter().any(|p| {
-        name.strip_prefix(p)
-            .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
-    })
+    ["_ST_T", "_STX_T", "_ITF_T", "_ST_INIT_T", "_ST_EXIT_T"]
+        .iter()
+        .any(|p| {
+            name.strip_prefix(p)
+                .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()))
+        })
 }

@@ -36,6 +36,18 @@ pub(crate) mod method_in_out;
 mod mixed_args;
 mod short_circuit;
 
+/// What the hidden labels and temporaries of `pou`'s lowering start with: `_ST_`, but `_ST_INIT_`
+/// and `_ST_EXIT_` in a B&R program's `PROGRAM _INIT` and `_EXIT`, which ladderc joins with the
+/// folder's `_CYCLIC` into one POU (`ladderc`'s `br_programs`): a loop in both parts is no label
+/// or temporary defined twice (before round 25: E1010 `_ST_FOR1` defined twice).
+fn hidden_prefix(pou: &Pou) -> &'static str {
+    match pou.kind {
+        PouKind::Program if pou.name.name.eq_ignore_ascii_case("_INIT") => "_ST_INIT_",
+        PouKind::Program if pou.name.name.eq_ignore_ascii_case("_EXIT") => "_ST_EXIT_",
+        _ => "_ST_",
+    }
+}
+
 /// Labels of the innermost loop, for EXIT and CONTINUE.
 struct LoopLabels {
     exit: Ident,
@@ -224,7 +236,7 @@ impl<'d> PouLowering<'d> {
             temps: Vec::new(),
             next_label: 0,
             st_jump_noted: false,
-            prefix: "_ST_",
+            prefix: hidden_prefix(pou),
             loops: Vec::new(),
             poisoned: false,
             property_results: Vec::new(),
