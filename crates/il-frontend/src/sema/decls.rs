@@ -808,12 +808,10 @@ impl Analyzer<'_> {
                         d.name.name
                     ));
                 }
-                // a structure's field named with a keyword (`Continue`, `Type`: B&R's and
-                // CODESYS's libraries) is read only after `.` (`s.Continue`), where no keyword can
-                // stand: accepted
-                let field_keyword =
-                    self.declaring_fields && reserved_name(&d.name.name) == Some("a keyword");
-                if let Some(why) = reserved_name(&d.name.name).filter(|_| !field_keyword) {
+                // a structure's field named with a keyword, an elementary type or a standard
+                // block (`Continue`, `Type`, `byte`, `tp`: B&R's and CODESYS's libraries) is read
+                // only after `.` (`s.tp`), where none of them can stand: accepted
+                if let Some(why) = reserved_name(&d.name.name).filter(|_| !self.declaring_fields) {
                     // reported once, at the declaration; the variable is kept so that its uses
                     // give no further errors
                     self.error(

@@ -770,21 +770,27 @@ fn end_var_semicolons(
     text
 }
 
-/// Blanks each declaration whose name is a keyword that opens or closes a block (`Configuration :
-/// INT;`, `type : UDINT;` of a B&R library's structure: Automation Studio is case-sensitive and
-/// reserves only the upper-case words), from the name to its `;`, with one E1031 at the name: read
-/// as the keyword, the name would open a CONFIGURATION or TYPE and every block around it would be
-/// reported unclosed. Only inside `VAR ... END_VAR` and `STRUCT ... END_STRUCT`, only a name that
-/// starts a declaration (after the block's keyword, a qualifier, `;` or `,`) and is followed by `:`
-/// or `,`. The POU holding one is not compiled further (`compile_pending`: its E1031 is the one
-/// error).
+/// Blanks each variable declaration whose name is a keyword that opens or closes a block
+/// (`Configuration : INT;`: B&R Automation Studio is case-sensitive and reserves only the
+/// upper-case words), from the name to its `;`, with one E1031 at the name: read as the keyword,
+/// the name would open a CONFIGURATION or TYPE and every block around it would be reported
+/// unclosed. Only inside `VAR ... END_VAR`, only a name that starts a declaration (after the
+/// block's keyword, a qualifier, `;` or `,`) and is followed by `:` or `,`. The POU holding one is
+/// not compiled further (`compile_pending`: its E1031 is the one error).
+///
+/// A structure's field so named (`Type : USINT;`, `Configuration : ...` of B&R's own library
+/// types) is no error: a field is only reached after `.` (`s.Type`), where no keyword can stand.
+/// Each field name that the declaration grammar reads as a keyword (any word of
+/// [`crate::lexer::classify`] that is no name there) is replaced by a name of the same length
+/// (`_ype`), and its place and spelling are returned, for [`restore_field_names`] to put back
+/// after the parse.
 fn keyword_declarations(
     file: FileId,
     src: &str,
     toks: &[Token],
     diags: &mut Diagnostics,
     text: &mut Option<String>,
-) {
+) -> Vec<(usize, String)> {
     const BLOCK_WORDS: [&str; 7] = [
         "CONFIGURATION",
         "RESOURCE",
@@ -795,6 +801,8 @@ fn keyword_declarations(
         "FUNCTION_BLOCK",
     ];
     let mut in_decl = false;
+    let mut in_struct = false;
+    let mut fields = Vec::new();
     let mut k = 0;
     while k < toks.len() {
         let t = &toks[k];
@@ -803,6 +811,9 @@ fn keyword_declarations(
             continue;
         }
         let w = word(src, t).to_ascii_uppercase();
+        let followed_by_colon = toks
+            .get(k)
+            .is_some_and(|n| matches!(n.tok, Tok::Colon | Tok::Comma));
         let starts_decl = in_decl
             && k >= 2
             && (matches!(toks[k - 2].tok, Tok::Semi | Tok::Comma)
@@ -811,11 +822,23 @@ fn keyword_declarations(
                     "RETAIN" | "CONSTANT" | "NON_RETAIN" | "PERSISTENT" | "STRUCT"
                 )
                 || is_var_keyword(&word(src, &toks[k - 2]).to_ascii_uppercase()));
+        if in_struct && starts_decl && followed_by_colon && !w.starts_with("END_") {
+            let kind = crate::lexer::classify(&w);
+            if kind != crate::lexer::Word::Ident && !kind.is_name() {
+                // a field named with a keyword: a name of the same length (no keyword starts
+                // with `_`), its spelling put back after the parse
+                let r = t.range.clone();
+                let name = word(src, t).to_string();
+                let same_length = format!("_{}", &name[1..]);
+                text.get_or_insert_with(|| src.to_string())
+                    .replace_range(r.clone(), &same_length);
+                fields.push((r.start, name));
+            }
+            continue;
+        }
         let named = starts_decl
             && (BLOCK_WORDS.contains(&w.as_str()) || is_var_keyword(&w))
-            && toks
-                .get(k)
-                .is_some_and(|n| matches!(n.tok, Tok::Colon | Tok::Comma));
+            && followed_by_colon;
         if named {
             let name = word(src, t);
             diags.push(
@@ -850,8 +873,34 @@ fn keyword_declarations(
         }
         if is_var_keyword(&w) || w == "STRUCT" {
             in_decl = true;
+            in_struct = w == "STRUCT";
         } else if w == "END_VAR" || w == "END_STRUCT" {
             in_decl = false;
+            in_struct = false;
+        }
+    }
+    fields
+}
+
+/// Puts back the spelling of the structure fields named with a keyword (`Type : USINT;`) that
+/// [`keyword_declarations`] replaced by names of the same length for the parse.
+fn restore_field_names(unit: &mut CompilationUnit, fields: &[(usize, String)]) {
+    if fields.is_empty() {
+        return;
+    }
+    for item in &mut unit.items {
+        let LibraryElement::DataTypes(types) = item else {
+            continue;
+        };
+        for t in types {
+            if let crate::ast::TypeDef::Struct { fields: decls } = &mut t.def {
+                for d in decls {
+                    let at = d.name.span.start as usize;
+                    if let Some((_, name)) = fields.iter().find(|(s, _)| *s == at) {
+                        d.name.name.clone_from(name);
+                    }
+                }
+            }
         }
     }
 }
@@ -1249,6 +1298,8 @@ pub fn parse_text(
         None => src,
     };
     let mut references = RefTypes::default();
+    // the structure fields named with a keyword (`keyword_declarations`)
+    let mut keyword_fields = Vec::new();
     let (uninstanced, unextended, unstatic, unclassed): (String, String, String, String);
     let mut stat_at = Vec::new();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
@@ -1279,7 +1330,7 @@ pub fn parse_text(
         zero_initializers(src, &toks, &mut unsemi);
         // `Configuration : INT;` (B&R, case-sensitive, accepts it): one E1031, the declaration
         // blanked, so the block keyword opens no block (no cascade of E0008)
-        keyword_declarations(file, src, &toks, diags, &mut unsemi);
+        keyword_fields = keyword_declarations(file, src, &toks, diags, &mut unsemi);
         let src = match unsemi {
             Some(t) => {
                 unsemicoloned = t;
@@ -2019,6 +2070,7 @@ pub fn parse_text(
     let mut local = Diagnostics::new();
     let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
     super::var_stat::name_blocks(&mut unit, file, &stat_at);
+    restore_field_names(&mut unit, &keyword_fields);
     references.apply(&mut unit, &mut local);
     let marked = types_after(&unit, &to_string_at);
     unit.to_string_types.extend(marked);

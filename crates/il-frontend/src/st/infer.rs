@@ -83,6 +83,54 @@ impl Env<'_> {
         }
     }
 
+    /// The type an untyped integer literal `lit` takes beside an operand of type `ty` (the other
+    /// operand of an arithmetic or bit operation): `ty` when the literal fits it, else the smallest
+    /// integer (bit string) type that `ty` implicitly widens to and that holds the literal (IEC
+    /// 61131-3 ed. 3 6.6.1.6.2, implicit conversions; the literal's type is given by its context):
+    /// `256 * b` with `b : USINT` is a UINT multiplication, as CODESYS, TwinCAT and B&R compute it
+    /// in a wider integer. `None`: `lit` is no untyped integer literal, `ty` no plain integer or
+    /// bit-string type (a subrange keeps its range checks), or the literal fits it or no type.
+    pub fn literal_widened(&self, ty: &TypeRef, lit: &Expr) -> Option<TypeRef> {
+        let ExprKind::Literal(l) = &lit.kind else {
+            return None;
+        };
+        let LiteralKind::Int(v) = l.kind else {
+            return None;
+        };
+        if l.type_prefix.is_some() {
+            return None;
+        }
+        let TypeRef::Named(n) = self.resolve(ty) else {
+            return None;
+        };
+        let e = Elementary::from_name(&n.name)?;
+        let (lo, hi) = e.int_range()?;
+        if e == Elementary::Bool || (lo..=hi).contains(&v) {
+            return None;
+        }
+        use Elementary as E;
+        // smallest first; of two of one size, the one of the operand's signedness first
+        const ORDER: [Elementary; 12] = [
+            E::Usint,
+            E::Sint,
+            E::Byte,
+            E::Uint,
+            E::Int,
+            E::Word,
+            E::Udint,
+            E::Dint,
+            E::Dword,
+            E::Ulint,
+            E::Lint,
+            E::Lword,
+        ];
+        ORDER
+            .into_iter()
+            .filter(|c| *c != e && crate::sema::typing::widens(e, *c))
+            .find(|c| c.int_range().is_some_and(|(lo, hi)| (lo..=hi).contains(&v)))
+            .map(|c| elem_ref(c, lit.span))
+    }
+
     /// Whether `name` is a variable of the POU (or a global, or the function's result).
     pub fn var_type(&self, name: &Ident) -> Option<TypeRef> {
         let key = name.key();
@@ -390,7 +438,16 @@ impl Env<'_> {
                     (_, t) => t,
                 }
             }
-            ExprKind::Binary { op, left, right } => self.binary(*op, sub(left), sub(right), e.span),
+            ExprKind::Binary { op, left, right } => {
+                let (mut l, mut r) = (sub(left), sub(right));
+                // `256 * b` (b : USINT): the literal in the type that holds it (`literal_widened`)
+                if let Some(w) = l.known().and_then(|t| self.literal_widened(t, right)) {
+                    r = Ty::Known(w);
+                } else if let Some(w) = r.known().and_then(|t| self.literal_widened(t, left)) {
+                    l = Ty::Known(w);
+                }
+                self.binary(*op, l, r, e.span)
+            }
             ExprKind::Call { name, args } => self.call(name, args, e.span, sub),
             ExprKind::Error => Ty::Unknown,
         }

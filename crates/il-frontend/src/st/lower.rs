@@ -170,6 +170,16 @@ fn int_lit(v: i128, span: Span) -> Operand {
     })
 }
 
+/// `e`, an untyped literal, as a literal of the elementary type `t` (`UINT#256`).
+fn prefixed_literal(e: &Expr, t: &TypeRef) -> Option<Operand> {
+    let (ExprKind::Literal(l), TypeRef::Named(n)) = (&e.kind, t) else {
+        return None;
+    };
+    let mut l = l.clone();
+    l.type_prefix = Some(Ident::new(n.name.clone(), l.span));
+    Some(Operand::literal(l))
+}
+
 fn var_operand(name: &Ident) -> Operand {
     Operand::Var(VarRef {
         base: name.clone(),
@@ -893,7 +903,9 @@ impl<'d> PouLowering<'d> {
                 self.method_call(&sig, args, span, out, diags);
             }
             StmtKind::Empty => {}
-            // `x;` (W1431): nothing to run, but a name nothing declares is an error
+            // `x;` (W1431): nothing to run, but a name nothing declares is an error: loaded (the
+            // load does nothing), so that sema reports it as any use of an undeclared name (one
+            // E1001 per POU at its first use), with every other error of the project
             StmtKind::Named(p) => {
                 if let PlaceBase::Name(n) = &p.base {
                     let key = n.key();
@@ -905,15 +917,7 @@ impl<'d> PouLowering<'d> {
                         || self.il_actions.contains_key(&key)
                         || self.env().place_type(p).is_some();
                     if !known {
-                        diags.push(
-                            Diagnostic::error(code::E1001, format!("undeclared name `{}`", n.name))
-                                .at(n.span)
-                                .with_primary_label("not declared")
-                                .with_hint(format!(
-                                    "declare `{}` in a VAR block (or VAR_EXTERNAL for a global); a name alone as a statement does nothing",
-                                    n.name
-                                )),
-                        );
+                        out.push(ld(var_operand(n), n.span));
                     }
                 }
             }
@@ -2262,6 +2266,8 @@ impl<'d> PouLowering<'d> {
         enum Then<'e> {
             Apply(Op, &'e Expr, Option<TypeRef>, Span),
             Expt(Operand, Span),
+            /// `b + 256` (b : USINT): the literal in the type that holds it (`UINT#256`)
+            Literal(Op, Operand, Span),
         }
         let mut pending = Vec::new();
         let mut e = top;
@@ -2276,15 +2282,28 @@ impl<'d> PouLowering<'d> {
                     let (lt, rt) = (self.ty(left), self.ty(right));
                     let cmp = matches!(il_op, Op::Eq | Op::Ne | Op::Lt | Op::Gt | Op::Le | Op::Ge);
                     let ctx = if cmp { None } else { hint };
+                    // a literal beside a typed operand takes its type, or the smallest type
+                    // that type widens to and that holds it (`256 * b`, b : USINT: UINT#256)
+                    let env = self.env();
+                    let beside = |t: &TypeRef, lit: &Expr| {
+                        env.literal_widened(t, lit).unwrap_or_else(|| t.clone())
+                    };
                     let right_hint = match rt {
                         Ty::Known(_) => None,
-                        _ => lt.known().cloned().or(ctx.clone()),
+                        _ => lt.known().map(|t| beside(t, right)).or(ctx.clone()),
                     };
+                    let widened = lt
+                        .known()
+                        .and_then(|t| env.literal_widened(t, right))
+                        .and_then(|t| prefixed_literal(right, &t));
                     hint = match lt {
                         Ty::Known(_) => None,
-                        _ => rt.known().cloned().or(ctx),
+                        _ => rt.known().map(|t| beside(t, left)).or(ctx),
                     };
-                    pending.push(Then::Apply(il_op, right, right_hint, e.span));
+                    pending.push(match widened {
+                        Some(o) => Then::Literal(il_op, o, e.span),
+                        None => Then::Apply(il_op, right, right_hint, e.span),
+                    });
                 }
                 None => {
                     // a ** b: EXPT with the current result as IN1 (ANY_REAL).
@@ -2305,6 +2324,7 @@ impl<'d> PouLowering<'d> {
                 Then::Apply(op, right, right_hint, span) => {
                     self.apply(op, right, right_hint, span, out, diags)
                 }
+                Then::Literal(op, o, span) => out.push(simple(op, false, Some(o), span)),
                 Then::Expt(exp, span) => out.push(instr(
                     InstrKind::FunctionCall {
                         name: Ident::new("EXPT", span),

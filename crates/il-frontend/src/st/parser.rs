@@ -156,6 +156,9 @@ struct Parser<'s, 'd> {
     /// The last error reported (code, span): the same error at the same place again (an unclosed
     /// `(` or IF per level after E0108 "nested too deeply") is not repeated.
     last_error: Option<(Code, Span)>,
+    /// The token that starts the statements of the last CASE branch read (after its `:`): a
+    /// statement begins there (`0: Bump;`, see [`Parser::starts_statement`]).
+    arm_start: usize,
     diags: &'d mut Diagnostics,
 }
 
@@ -199,6 +202,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             this_dot: false,
             eof_text: "end of text",
             last_error: None,
+            arm_start: usize::MAX,
             diags,
         };
         for pr in problems {
@@ -1016,14 +1020,15 @@ impl<'s, 'd> Parser<'s, 'd> {
         }
     }
 
-    /// Whether `p` begins where a statement begins: the first token, or one after `;` or a
-    /// keyword (`THEN`, `ELSE`, `DO`, `END_IF` ...).
+    /// Whether `p` begins where a statement begins: the first token, one after `;` or a keyword
+    /// (`THEN`, `ELSE`, `DO`, `END_IF` ...), or the first of a CASE branch's statements (after the
+    /// `:` of its labels: IEC 61131-3 ed. 3 7.3.3.3.3, `case_element: case_list ':' stmt_list`).
     fn starts_statement(&self, p: &Place) -> bool {
         let start = (p.span.start as usize).saturating_sub(self.base);
         let Some(k) = self.toks.iter().position(|t| t.range.start == start) else {
             return false;
         };
-        k == 0 || matches!(self.toks[k - 1].tok, Tok::Semi | Tok::Kw(_))
+        k == 0 || k == self.arm_start || matches!(self.toks[k - 1].tok, Tok::Semi | Tok::Kw(_))
     }
 
     fn place_text(&self, p: &Place) -> &'s str {
@@ -1192,6 +1197,7 @@ impl<'s, 'd> Parser<'s, 'd> {
                 );
                 self.sync();
             }
+            self.arm_start = self.pos;
             let body = self.nested(|p| p.case_arm_body());
             arms.push(CaseArm {
                 labels,
