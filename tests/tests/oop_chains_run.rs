@@ -282,7 +282,7 @@ fn a_methods_pointer_initialised_from_the_instance_is_set_at_each_call() {
     );
     assert_eq!(
         heads,
-        ["shared.st:4:27: error[E0305]: a reference cannot have the initial value `THIS^.p`"]
+        ["shared.st:4:27: error[E0305]: a pointer cannot have the initial value `THIS^.p`"]
     );
 }
 

@@ -39,9 +39,10 @@ pub fn enum_key(value: &str) -> String {
     format!("ENUM {}", value.to_ascii_uppercase())
 }
 
-/// Adds the values of the enumeration `values` (implicit ones count on from the previous, as sema
-/// numbers them) under [`enum_key`]; a value already known (another enumeration's) is kept.
-pub fn add_enum_values(consts: &mut Constants, values: &[crate::ast::EnumValue]) {
+/// Adds the values of the enumeration `type_name` (`values`; implicit ones count on from the
+/// previous, as sema numbers them) under [`enum_key`] of the value, where a value already known
+/// (another enumeration's) is kept, and of `type_name.value` ([`enum_operand_value`]).
+pub fn add_enum_values(consts: &mut Constants, type_name: &str, values: &[crate::ast::EnumValue]) {
     let mut next = 0i128;
     for v in values {
         let value = v.value.unwrap_or(next);
@@ -49,7 +50,30 @@ pub fn add_enum_values(consts: &mut Constants, values: &[crate::ast::EnumValue])
         consts
             .entry(enum_key(&v.name.name))
             .or_insert(ConstNum::Int(value));
+        consts.insert(
+            enum_key(&format!("{type_name}.{}", v.name.name)),
+            ConstNum::Int(value),
+        );
     }
+}
+
+/// The number of an enumerated value that is the initial value of a constant (`N : INT :=
+/// E_Topic.COUNT_OF;`, `E_Topic#COUNT_OF`, or `COUNT_OF` alone when no constant has that name),
+/// so that the constant may bound an array as one with a literal value does (CODESYS and TwinCAT
+/// take a value of an enumeration without `{attribute 'strict'}` as its number). `None` when the
+/// operand names no enumeration's value of `consts`.
+pub fn enum_operand_value(consts: &Constants, op: &crate::ast::Operand) -> Option<ConstNum> {
+    use crate::ast::{Accessor, Operand};
+    let key = match op {
+        Operand::EnumValue(e) => enum_key(&format!("{}.{}", e.type_name.name, e.value.name)),
+        Operand::Var(v) => match &v.accessors[..] {
+            [] if !consts.contains_key(&v.base.name.to_ascii_uppercase()) => enum_key(&v.base.name),
+            [Accessor::Field(value)] => enum_key(&format!("{}.{}", v.base.name, value.name)),
+            _ => return None,
+        },
+        _ => return None,
+    };
+    consts.get(&key).copied()
 }
 
 impl ConstNum {

@@ -1132,8 +1132,15 @@ impl<'s> Ctx<'s> {
             let value = match &init {
                 Some(Initializer::Value(Operand::Literal(lit))) => ConstNum::of_literal(lit),
                 // `C3 : REAL := C1;`: a constant named before
-                Some(Initializer::Value(Operand::Var(v))) if v.accessors.is_empty() => {
+                Some(Initializer::Value(Operand::Var(v)))
+                    if v.accessors.is_empty()
+                        && self.consts.contains_key(&v.base.name.to_ascii_uppercase()) =>
+                {
                     self.consts.get(&v.base.name.to_ascii_uppercase()).copied()
+                }
+                // `N : INT := E_Topic.COUNT_OF;`: an enumeration's value, as its number
+                Some(Initializer::Value(op)) => {
+                    crate::const_eval::enum_operand_value(&self.consts, op)
                 }
                 _ => None,
             };
@@ -1706,6 +1713,17 @@ pub fn global_integer_constants(unit: &CompilationUnit, diags: &Diagnostics) -> 
 /// parse again when a bound named one declared after it (`ARRAY[0..TABLESIZE - 1]` above the
 /// POU's `VAR CONSTANT TABLESIZE`, as CODESYS and TwinCAT resolve names, not order).
 pub fn integer_constants(unit: &CompilationUnit, diags: &Diagnostics, pous: bool) -> Constants {
+    integer_constants_knowing(unit, diags, pous, &Constants::new())
+}
+
+/// [`integer_constants`], with the enumerations' values of `known` (the project's other files'
+/// constants: `N : INT := E_Topic.COUNT_OF;` of a TwinCAT DUT's enumeration).
+pub fn integer_constants_knowing(
+    unit: &CompilationUnit,
+    diags: &Diagnostics,
+    pous: bool,
+    known: &Constants,
+) -> Constants {
     let mut found = Constants::new();
     let failed = |span: Span| {
         diags.iter().any(|d| {
@@ -1715,6 +1733,17 @@ pub fn integer_constants(unit: &CompilationUnit, diags: &Diagnostics, pous: bool
                 })
         })
     };
+    // a TwinCAT DUT's enumeration bounds the arrays of other objects, and gives the value of a
+    // constant (`N : INT := E_Topic.COUNT_OF;`)
+    for item in &unit.items {
+        if let LibraryElement::DataTypes(types) = item {
+            for t in types {
+                if let TypeDef::Enum { values, .. } = &t.def {
+                    crate::const_eval::add_enum_values(&mut found, &t.name.name, values);
+                }
+            }
+        }
+    }
     let mut add = |block: &VarBlock| {
         if !block.constant
             || !(block.kind == VarKind::Global || pous && block.kind == VarKind::Local)
@@ -1725,9 +1754,15 @@ pub fn integer_constants(unit: &CompilationUnit, diags: &Diagnostics, pous: bool
             let value = match &v.init {
                 Some(Initializer::Value(Operand::Literal(lit))) => ConstNum::of_literal(lit),
                 // `MAX_SIZE : INT := nJoints;`: a constant named before (CODESYS GVLs)
-                Some(Initializer::Value(Operand::Var(r))) if r.accessors.is_empty() => {
+                Some(Initializer::Value(Operand::Var(r)))
+                    if r.accessors.is_empty()
+                        && found.contains_key(&r.base.name.to_ascii_uppercase()) =>
+                {
                     found.get(&r.base.name.to_ascii_uppercase()).copied()
                 }
+                // `N : INT := E_Topic.COUNT_OF;` (an enumeration of the unit)
+                Some(Initializer::Value(op)) => crate::const_eval::enum_operand_value(&found, op)
+                    .or_else(|| crate::const_eval::enum_operand_value(known, op)),
                 _ => None,
             };
             let value = value.and_then(|n| crate::const_eval::as_declared(n, &v.ty));
@@ -1736,17 +1771,9 @@ pub fn integer_constants(unit: &CompilationUnit, diags: &Diagnostics, pous: bool
             }
         }
     };
-    let mut enums = Vec::new();
     for item in &unit.items {
         match item {
             LibraryElement::GlobalVars(b) => add(b),
-            // a TwinCAT DUT's enumeration bounds the arrays of other objects
-            LibraryElement::DataTypes(types) => {
-                enums.extend(types.iter().filter_map(|t| match &t.def {
-                    TypeDef::Enum { values, .. } => Some(values),
-                    _ => None,
-                }))
-            }
             LibraryElement::Pou(p) if pous => p.var_blocks.iter().for_each(&mut add),
             LibraryElement::Configuration(c) => {
                 c.globals.iter().for_each(&mut add);
@@ -1757,9 +1784,6 @@ pub fn integer_constants(unit: &CompilationUnit, diags: &Diagnostics, pous: bool
             }
             _ => {}
         }
-    }
-    for values in enums {
-        crate::const_eval::add_enum_values(&mut found, values);
     }
     found
 }

@@ -306,6 +306,8 @@ impl Session {
         // the programs of every file, known before any is parsed: `PRG.M(x)` in one file calls a
         // method of a program of another (TwinCAT: one POU per file), no library's function
         let mut programs = std::collections::HashSet::new();
+        // and their global variables: a POU's initial value reading one is computed at run time
+        let mut globals = std::collections::HashSet::new();
         for p in paths.iter().filter(|p| !is_stdin(p)) {
             let text = match self.overlay.get(p) {
                 Some(t) => Some(t.clone()),
@@ -316,9 +318,11 @@ impl Session {
             };
             if let Some(t) = text {
                 programs.extend(il_frontend::st::qualifiers::program_names(&t));
+                globals.extend(il_frontend::st::global_variable_names(&t));
             }
         }
         let programs_before = il_frontend::st::qualifiers::set_project_programs(programs);
+        let globals_before = il_frontend::st::set_project_globals(globals);
         // several PLCopen XML files (CODESYS exports one object per file), or XML beside text
         // inputs (a TwinCAT project's `.TcDUT` types of an imported PLCopen POU): compiled once
         // all are read, each knowing the POUs and data types of the others
@@ -757,6 +761,7 @@ impl Session {
         // B&R: a program folder's _INIT, _CYCLIC, _EXIT and .var files are one program
         crate::br_programs::join(&mut units, &self.map, &mut self.diags);
         il_frontend::st::qualifiers::set_project_programs(programs_before);
+        il_frontend::st::set_project_globals(globals_before);
         units
     }
 
@@ -901,8 +906,11 @@ impl Session {
         known.extend(il_frontend::type_sizes::project_sizes(units.iter()));
         let mut results: Vec<Option<(CompilationUnit, _, _)>> =
             waiting.iter().map(|_| None).collect();
-        for _ in 0..waiting.len() {
+        // (one pass more: a file's own constant may be known once another file's enumeration is,
+        // `N : INT := E_Topic.COUNT_OF;` bounding an array declared above it)
+        for _ in 0..=waiting.len() {
             let mut found = known.clone();
+            let mut own_grew = false;
             for (w, result) in waiting.iter_mut().zip(results.iter_mut()) {
                 let src = w.text.as_ref().unwrap_or(&self.map.get(w.file).text);
                 let mut local = Diagnostics::new();
@@ -910,6 +918,7 @@ impl Session {
                 for (k, v) in &w.own {
                     offered.entry(k.clone()).or_insert(*v);
                 }
+                let knowing = offered.clone();
                 let parsed = il_frontend::parser::with_other_files_constants(offered, || {
                     il_frontend::st::with_other_files_names(names.clone(), || {
                         il_frontend::st::file::parse_text(
@@ -921,9 +930,14 @@ impl Session {
                         )
                     })
                 });
-                found.extend(il_frontend::parser::global_integer_constants(
-                    &parsed.0, &local,
+                found.extend(il_frontend::parser::integer_constants_knowing(
+                    &parsed.0, &local, false, &knowing,
                 ));
+                let own = il_frontend::parser::integer_constants_knowing(
+                    &parsed.0, &local, true, &knowing,
+                );
+                own_grew |= own.keys().any(|k| !w.own.contains_key(k));
+                w.own.extend(own);
                 w.diags = local;
                 *result = Some(parsed);
             }
@@ -943,7 +957,7 @@ impl Session {
             found.extend(il_frontend::type_sizes::project_sizes(
                 latest.iter().copied(),
             ));
-            let grew = found != known;
+            let grew = found != known || own_grew;
             known = found;
             if !grew
                 || waiting

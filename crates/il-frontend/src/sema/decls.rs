@@ -1458,6 +1458,25 @@ impl Analyzer<'_> {
 
     fn const_value(&mut self, op: &Operand, ty: &Type, consts: &Consts) -> Option<ConstValue> {
         let tn = self.type_name(ty);
+        if let Some(n) = ty
+            .is_integer()
+            .then(|| self.loose_enum_number(op, consts))
+            .flatten()
+        {
+            return match ty.elementary().and_then(|e| e.int_range()) {
+                Some((lo, hi)) if n < lo || n > hi => {
+                    self.error(
+                        code::E1017,
+                        op.span(),
+                        format!("initial value {n} does not fit {tn}"),
+                    )
+                    .label("out of range")
+                    .hint(format!("use a value in the range of {tn} or a wider type"));
+                    None
+                }
+                _ => Some(ConstValue::Int(n)),
+            };
+        }
         match op {
             Operand::Literal(lit) => {
                 self.check_single_byte(lit);
@@ -1612,6 +1631,37 @@ impl Analyzer<'_> {
                 );
                 None
             }
+        }
+    }
+
+    /// The number of the enumerated value `op` names for an integer initial value (`N : INT :=
+    /// E_Topic.COUNT_OF;`, `E_Topic#COUNT_OF`, or `COUNT_OF` alone when no constant has that name
+    /// and one enumeration only declares it), when its enumeration is declared without
+    /// `{attribute 'strict'}` (CODESYS and TwinCAT take it as its number; `super::loose_enum`).
+    fn loose_enum_number(&self, op: &Operand, consts: &Consts) -> Option<i128> {
+        let (id, value) = match op {
+            Operand::EnumValue(e) => (self.model.type_by_name(&e.type_name.name)?, &e.value.name),
+            Operand::Var(v) => match &v.accessors[..] {
+                [crate::ast::Accessor::Field(value)] => {
+                    (self.model.type_by_name(&v.base.name)?, &value.name)
+                }
+                [] if !consts.contains_key(&v.base.key()) => {
+                    match self.enum_values.get(&v.base.key()).map(Vec::as_slice) {
+                        Some([(id, _)]) => (*id, &v.base.name),
+                        _ => return None,
+                    }
+                }
+                _ => return None,
+            },
+            _ => return None,
+        };
+        let ut = self.model.user_type(id);
+        match &ut.def {
+            UserTypeDef::Enum { values, .. } if !ut.strict => values
+                .iter()
+                .find(|(n, _)| n.eq_ignore_ascii_case(value))
+                .map(|(_, number)| *number),
+            _ => None,
         }
     }
 

@@ -1519,6 +1519,7 @@ pub fn parse_text(
                 blank(&mut text, p.body.clone());
             }
         }
+        references.settle_initial_values(&mut text, &[]);
         let unit = crate::parse_named(file, &text, implicit_name, diags);
         return (unit, pending, var_config.1);
     }
@@ -1611,6 +1612,15 @@ pub fn parse_text(
         );
         blank(&mut text, r.clone());
     }
+    // the global variables of this file, which a POU's initial value may read at run time (the
+    // project's other files: `pou_inits::set_project_globals`)
+    let file_globals: std::collections::HashSet<String> =
+        super::pou_inits::global_variable_names(src)
+            .into_iter()
+            .collect();
+    // the ranges of `:= expr` computed at run time: a reference's initial value among them is
+    // no E0305 (`RefTypes::settle_initial_values`)
+    let mut computed: Vec<Range<usize>> = Vec::new();
     for p in &pous {
         if let Some(r) = &p.modifier {
             // FINAL and ABSTRACT are checked with inheritance (`super::inherit`)
@@ -1906,6 +1916,7 @@ pub fn parse_text(
                 &text,
                 p.name_range.end..p.body.start,
                 function,
+                &file_globals,
             )
             .is_some();
         let lang = if (oop.is_some()
@@ -2008,7 +2019,12 @@ pub fn parse_text(
                 let from = p.name_range.end;
                 let found = (from < p.body.start)
                     .then(|| {
-                        super::pou_inits::pou_run_time_inits(&text, from..p.body.start, function)
+                        super::pou_inits::pou_run_time_inits(
+                            &text,
+                            from..p.body.start,
+                            function,
+                            &file_globals,
+                        )
                     })
                     .flatten();
                 let var_inits: Vec<(FileId, String, usize)> = found
@@ -2021,6 +2037,7 @@ pub fn parse_text(
                             ));
                         }
                         for (_, r) in cut {
+                            computed.push(r.clone());
                             blank(&mut text, r);
                         }
                         (file, inits, from)
@@ -2067,6 +2084,7 @@ pub fn parse_text(
     for r in &var_config.0 {
         blank(&mut text, r.clone());
     }
+    references.settle_initial_values(&mut text, &computed);
     let mut local = Diagnostics::new();
     let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
     super::var_stat::name_blocks(&mut unit, file, &stat_at);

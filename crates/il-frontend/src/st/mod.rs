@@ -48,6 +48,7 @@ pub mod varlen;
 
 pub use conditional::ProjectDefines;
 pub use lower::PouLowering;
+pub use pou_inits::{global_variable_names, set_project_globals};
 pub use qualifiers::{offered_names, with_other_files_names};
 pub use types::{Declarations, PouInterface};
 

@@ -10,11 +10,16 @@
 //! instance is initialised (before its FB_init, a hidden `method_inits::INIT_PREFIX` method) and
 //! when the POU first runs (an instance that initialisation does not reach); a FUNCTION at each
 //! call; a derived block its bases' first ([`super::inherit`]).
+//! A variable read is one of the POU declared before it, or a global variable (not CONSTANT) of
+//! the project or of the file (`bFirst : BOOL := GVL.aCoils[0];`, `n : INT := gBase + 2;`: the
+//! names [`set_project_globals`] makes known, found by [`global_variable_names`]); an address
+//! whose index is computed (`p : POINTER TO WORD := ADR(regs[idx]);`) is computed too.
 //! Invariants: positions do not move; only single-name declarations of VAR, VAR_TEMP (and of
 //! VAR_INPUT, VAR_OUTPUT outside a FUNCTION, whose inputs hold their arguments) outside CONSTANT
 //! blocks are taken; a value that is a structure or array initialiser, holds a `^` or a `:=`,
-//! reads variables only inside `ADR(..)`, `REF(..)`, `SIZEOF(..)`, or is a variable alone given to
-//! a variable of a user type (an interface started with an instance) stays the declaration's.
+//! reads variables only inside `ADR(..)`, `REF(..)` (a name, or literal indices), `SIZEOF(..)`,
+//! or is a variable alone given to a variable of a user type (an interface started with an
+//! instance) stays the declaration's.
 
 use super::lexer::{lex, Tok, Token};
 use super::method_inits::{blank, declarations};
@@ -27,28 +32,108 @@ pub(super) type Computed = (Range<usize>, Range<usize>);
 /// The functions whose arguments are no values read (an address, a size).
 const NOT_READ: [&str; 3] = ["ADR", "REF", "SIZEOF"];
 
-/// See the module documentation; `function`: the POU is a FUNCTION. The ranges are `(name, :=
-/// expr)` in `text`. `None` when no declaration of `text[region]` has such a value.
+thread_local! {
+    /// The global variables (not CONSTANT) of the project's files, upper case, set by
+    /// [`set_project_globals`] before any file is parsed.
+    static PROJECT_GLOBALS: std::cell::RefCell<HashSet<String>> = Default::default();
+}
+
+/// Makes `names` (upper case, [`global_variable_names`] of every file of the project) the global
+/// variables an initial value may read at run time; returns the names set before, to put back
+/// when the project is read.
+pub fn set_project_globals(names: HashSet<String>) -> HashSet<String> {
+    PROJECT_GLOBALS.with(|g| g.replace(names))
+}
+
+/// The names declared in the `VAR_GLOBAL` blocks of `text` that are not CONSTANT (`VAR_GLOBAL
+/// CONSTANT`, `VAR_GLOBAL RETAIN CONSTANT`), upper case: a scan of the raw text (an `.st` file or
+/// a TwinCAT object's XML), before any file is parsed.
+pub fn global_variable_names(text: &str) -> Vec<String> {
+    if !text
+        .as_bytes()
+        .windows(10)
+        .any(|w| w.eq_ignore_ascii_case(b"VAR_GLOBAL"))
+    {
+        return Vec::new();
+    }
+    let toks = lex(text).0;
+    let word = |k: usize| text.get(toks[k].range.clone()).unwrap_or("");
+    let mut out = Vec::new();
+    for d in declarations(text, &toks) {
+        if d.block != "VAR_GLOBAL" {
+            continue;
+        }
+        // the block's qualifiers, after its keyword (`VAR_GLOBAL RETAIN CONSTANT`)
+        let mut q = d.start;
+        while q > 0
+            && toks[q - 1].tok == Tok::Ident
+            && !word(q - 1).eq_ignore_ascii_case("VAR_GLOBAL")
+        {
+            q -= 1;
+        }
+        let constant = d.constant || (q..d.start).any(|j| word(j).eq_ignore_ascii_case("CONSTANT"));
+        if constant {
+            continue;
+        }
+        out.extend(declared_names(text, &toks, &d).map(|n| n.to_ascii_uppercase()));
+    }
+    out
+}
+
+/// The names a declaration declares (before its `:`).
+fn declared_names<'a>(
+    decls: &'a str,
+    toks: &'a [Token],
+    d: &super::method_inits::Declaration,
+) -> impl Iterator<Item = &'a str> + 'a {
+    let names_end = d.assign.unwrap_or(d.end);
+    let colon = (d.start..names_end).find(|&j| toks[j].tok == Tok::Colon);
+    let mut at = false;
+    toks[d.start..colon.unwrap_or(d.start)]
+        .iter()
+        .filter(move |t| {
+            // `x AT %IX0.0 : BOOL`
+            let w = decls.get(t.range.clone()).unwrap_or("");
+            at |= w.eq_ignore_ascii_case("AT");
+            t.tok == Tok::Ident && !at
+        })
+        .map(|t| decls.get(t.range.clone()).unwrap_or(""))
+}
+
+/// See the module documentation; `function`: the POU is a FUNCTION; `file_globals`: the global
+/// variables of the POU's file ([`global_variable_names`]). The ranges are `(name, := expr)` in
+/// `text`. `None` when no declaration of `text[region]` has such a value.
 pub(super) fn pou_run_time_inits(
     text: &str,
     region: Range<usize>,
     function: bool,
+    file_globals: &HashSet<String>,
 ) -> Option<(Vec<Computed>, String)> {
     let decls = text.get(region.clone())?;
     let toks = lex(decls).0;
     let mut inits = blank(decls);
     let mut cut = Vec::new();
-    // the variables declared before (upper-case, not constants)
+    let all = declarations(decls, &toks);
+    // the variables declared before (upper-case, not constants), then the globals that no
+    // constant of the POU hides
     let mut variables: HashSet<String> = HashSet::new();
-    for d in declarations(decls, &toks) {
-        let names_end = d.assign.unwrap_or(d.end);
+    let constants: HashSet<String> = all
+        .iter()
+        .filter(|d| d.constant)
+        .flat_map(|d| declared_names(decls, &toks, d).map(|n| n.to_ascii_uppercase()))
+        .collect();
+    let globals: HashSet<String> = PROJECT_GLOBALS.with(|g| {
+        g.borrow()
+            .iter()
+            .chain(file_globals)
+            .filter(|n| !constants.contains(*n))
+            .cloned()
+            .collect()
+    });
+    for d in all {
         if !d.constant {
-            let colon = (d.start..names_end).find(|&j| toks[j].tok == Tok::Colon);
-            for t in toks[d.start..colon.unwrap_or(d.start)]
-                .iter()
-                .filter(|t| t.tok == Tok::Ident)
-            {
-                variables.insert(decls[t.range.clone()].to_ascii_uppercase());
+            for n in declared_names(decls, &toks, &d) {
+                variables.insert(n.to_ascii_uppercase());
             }
         }
         let block_taken = matches!(d.block.as_str(), "VAR" | "VAR_TEMP")
@@ -74,7 +159,7 @@ pub(super) fn pou_run_time_inits(
                 crate::sema::Elementary::from_name(&ty.to_ascii_uppercase()).is_some()
             });
         let alone = value.len() == 1;
-        if plain && (elementary || !alone) && run_time(decls, value, &variables) {
+        if plain && (elementary || !alone) && run_time(decls, value, &variables, &globals) {
             let from = toks[k].range.start;
             let to = toks[d.end - 1].range.end;
             let name = toks[d.start].range.clone();
@@ -90,28 +175,48 @@ pub(super) fn pou_run_time_inits(
     (!cut.is_empty()).then_some((cut, inits))
 }
 
-/// Whether `value` calls a function other than [`NOT_READ`]'s, or reads one of `variables`
-/// outside their arguments.
-fn run_time(decls: &str, value: &[Token], variables: &HashSet<String>) -> bool {
-    let mut inside: Option<usize> = None;
+/// Whether `value` calls a function other than [`NOT_READ`]'s, or reads one of `variables` or
+/// of `globals` (also qualified, `GVL.x`) outside their arguments, or indexes with a name inside
+/// `ADR(..)` / `REF(..)` (`ADR(regs[idx])`: an address computed at run time).
+fn run_time(
+    decls: &str,
+    value: &[Token],
+    variables: &HashSet<String>,
+    globals: &HashSet<String>,
+) -> bool {
+    // (the depth of the parentheses of a NOT_READ call, whether it takes an address)
+    let mut inside: Option<(usize, bool)> = None;
     let mut depth = 0usize;
+    let mut brackets = 0usize;
     for (j, t) in value.iter().enumerate() {
         match t.tok {
             Tok::LParen => depth += 1,
             Tok::RParen => {
                 depth = depth.saturating_sub(1);
-                if inside.is_some_and(|d| depth < d) {
+                if inside.is_some_and(|(d, _)| depth < d) {
                     inside = None;
                 }
             }
-            Tok::Ident if inside.is_none() => {
+            Tok::LBracket => brackets += 1,
+            Tok::RBracket => brackets = brackets.saturating_sub(1),
+            Tok::Ident => {
                 let n = decls[t.range.clone()].to_ascii_uppercase();
                 let called = value.get(j + 1).is_some_and(|n| n.tok == Tok::LParen);
                 let field = j > 0 && value[j - 1].tok == Tok::Dot;
-                if called && NOT_READ.contains(&n.as_str()) {
-                    inside = Some(depth + 1);
-                } else if called || (!field && variables.contains(&n)) {
-                    return true;
+                match inside {
+                    // `ADR(regs[idx])`, `ADR(regs[N])`: the index is read
+                    Some((_, true)) if brackets > 0 => return true,
+                    Some(_) => {}
+                    None if called && NOT_READ.contains(&n.as_str()) => {
+                        inside = Some((depth + 1, n != "SIZEOF"));
+                    }
+                    None if called
+                        || (!field && variables.contains(&n))
+                        || globals.contains(&n) =>
+                    {
+                        return true
+                    }
+                    None => {}
                 }
             }
             _ => {}

@@ -21,6 +21,7 @@ use crate::ast::{
 use crate::{FileId, Span};
 use diagnostics::{code, Diagnostic, Diagnostics};
 use std::collections::HashMap;
+use std::ops::Range;
 
 /// `__ISVALIDREF(r)` (CODESYS): whether reference `r` refers to a variable (is not NULL).
 pub const IS_VALID_REF: &str = "__ISVALIDREF";
@@ -77,6 +78,10 @@ pub struct RefTypes {
     /// While blanking: the declaration being read is of one name in a method (`p : T := e`), whose
     /// initial value `method_inits` can assign (`a, b : T := e` it cannot: E0305 stays).
     one_method_var: bool,
+    /// The initial values of pointers that `super::pou_inits` may compute at run time (`p :
+    /// POINTER TO WORD := ADR(regs[idx]);` in a POU's VAR), left in the text with their E0305:
+    /// [`Self::settle_initial_values`]. Only while blanking a whole file ([`Self::blank_keywords`]).
+    deferred: Option<Vec<(Range<usize>, Diagnostic)>>,
 }
 
 impl RefTypes {
@@ -89,7 +94,22 @@ impl RefTypes {
     /// in a VAR, STRUCT or TYPE block, or a FUNCTION's result type) and records them. `None`: the text
     /// has none (nothing blanked).
     pub fn blank_keywords(file: FileId, src: &str, toks: &[Token]) -> (Option<String>, RefTypes) {
-        Self::blank_keywords_at(file, src, toks, 0)
+        Self::blank_keywords_deferring(file, src, toks, 0, true)
+    }
+
+    /// The E0305 of the pointers' initial values left in the text ([`Self::deferred`]) that are
+    /// not among the initial values computed at run time (`computed`, ranges of `:= expr`):
+    /// reported, and the values blanked in `text`.
+    pub fn settle_initial_values(&mut self, text: &mut String, computed: &[Range<usize>]) {
+        for (r, d) in self.deferred.take().unwrap_or_default() {
+            if !computed
+                .iter()
+                .any(|c| c.start <= r.start && r.end <= c.end)
+            {
+                blank(text, r);
+                self.pending.push(d);
+            }
+        }
     }
 
     /// [`Self::blank_keywords`] of a text that starts at offset `base` of its file (a declaration
@@ -100,6 +120,16 @@ impl RefTypes {
         toks: &[Token],
         base: usize,
     ) -> (Option<String>, RefTypes) {
+        Self::blank_keywords_deferring(file, src, toks, base, false)
+    }
+
+    fn blank_keywords_deferring(
+        file: FileId,
+        src: &str,
+        toks: &[Token],
+        base: usize,
+        defer: bool,
+    ) -> (Option<String>, RefTypes) {
         let mut text: Option<String> = None;
         let mut refs = RefTypes {
             file: Some(file),
@@ -108,6 +138,7 @@ impl RefTypes {
             addresses: HashMap::new(),
             in_method: false,
             one_method_var: false,
+            deferred: defer.then(Vec::new),
         };
         let mut in_decl = false;
         for (k, t) in toks.iter().enumerate() {
@@ -188,7 +219,11 @@ impl RefTypes {
                         && k >= 1
                         && toks[k - 1].tok == Tok::Ident
                         && (k < 2 || toks[k - 2].tok != Tok::Comma);
-                    refs.initial_value(file, src, toks, j, base, &mut text);
+                    let kind = refs
+                        .at
+                        .get(&(base + target.range.start))
+                        .and_then(|(k, _)| k.first().copied());
+                    refs.initial_value(file, src, toks, (j, kind), base, &mut text);
                 }
             }
         }
@@ -198,12 +233,14 @@ impl RefTypes {
     /// The initial value of a reference declared at token `j` (its type), up to the `;`: `:= NULL`
     /// is what every reference starts with (blanked); `:= REF(x)` / `ADR(x)` is one E0305 (a
     /// reference starts as NULL; it is set in the body), blanked too, so that the declaration reads.
+    /// `kind`: the outermost keyword; the value of a `POINTER TO` or `REF_TO` (not a `REFERENCE
+    /// TO`) `super::pou_inits` may compute at run time (`:= ADR(regs[idx])`): then left for it.
     fn initial_value(
         &mut self,
         file: FileId,
         src: &str,
         toks: &[Token],
-        j: usize,
+        (j, kind): (usize, Option<RefKind>),
         base: usize,
         text: &mut Option<String>,
     ) {
@@ -263,15 +300,27 @@ impl RefTypes {
             // (`method_inits`), left in the text for it
             return;
         } else if !value.eq_ignore_ascii_case("NULL") && !is_zero_literal(value) {
-            self.pending.push(
-                Diagnostic::error(
-                    code::E0305,
-                    format!("a reference cannot have the initial value `{value}`"),
-                )
-                .at(value_span)
-                .with_primary_label("initial value")
-                .with_hint("a reference starts as NULL or as `ADR(x)` of a variable of its POU: set it in the body (`r := REF(x);`)"),
-            );
+            let what = if kind == Some(RefKind::Pointer) {
+                "a pointer"
+            } else {
+                "a reference"
+            };
+            let pointer = matches!(kind, Some(RefKind::Pointer | RefKind::RefTo));
+            let d = Diagnostic::error(
+                code::E0305,
+                format!("{what} cannot have the initial value `{value}`"),
+            )
+            .at(value_span)
+            .with_primary_label("initial value")
+            .with_hint(format!("{what} starts as NULL or as `ADR(x)` of a variable; a pointer of a PROGRAM's or block's VAR may start as an address computed at run time (`ADR(a[i])`): else set it in the body (`r := REF(x);`)"));
+            if let (Some(deferred), true, false) =
+                (self.deferred.as_mut(), pointer, ref_eq || self.in_method)
+            {
+                // left in the text: `pou_inits` may compute it
+                deferred.push((assign.range.start..last.range.end, d));
+                return;
+            }
+            self.pending.push(d);
         }
         blank(
             text.get_or_insert_with(|| src.to_string()),
