@@ -1344,9 +1344,15 @@ impl Body<'_, '_> {
                     if b.a.passing_any_address {
                         return any_address_refused(b, s, &pn, &cn, from);
                     }
+                    let hint = match ltime_timer(&cn) {
+                        Some(l) if pn == "PT" && from == "LTIME" => format!(
+                            "declare the instance {l} (edition 3's timer on LTIME), or convert explicitly with LTIME_TO_TIME"
+                        ),
+                        _ => conversion_hint(from, to),
+                    };
                     b.a.error(code::E1012, s, format!("{pn} of {cn} is {to}, not {from}"))
                         .label(format!("this is {from}"))
-                        .hint(conversion_hint(from, to));
+                        .hint(hint);
                 });
                 self.a.passing_any_address = false;
                 rec.args.push((
@@ -1667,4 +1673,16 @@ fn holding_both(a: &Type, b: &Type) -> Option<Elementary> {
                 && super::typing::widens(b, c)
         })
         .min_by_key(|c| (c.bit_width(), c.is_real()))
+}
+
+/// The LTIME timer of edition 3 (Table 46) in the family of the TIME timer `callee` (`TON` ->
+/// `TON_LTIME`), for the hint of an LTIME given to its PT.
+fn ltime_timer(callee: &str) -> Option<&'static str> {
+    let fb = super::StdFb::from_name(callee)?;
+    match fb.timer()? {
+        (super::StdFb::Ton, false) => Some("TON_LTIME"),
+        (super::StdFb::Tof, false) => Some("TOF_LTIME"),
+        (super::StdFb::Tp, false) => Some("TP_LTIME"),
+        _ => None,
+    }
 }

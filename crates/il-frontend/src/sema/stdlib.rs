@@ -672,6 +672,12 @@ const TIMER: &[FbParam] = &[
     o("Q", E::Bool),
     o("ET", E::Time),
 ];
+const LTIMER: &[FbParam] = &[
+    i("IN", E::Bool),
+    i("PT", E::Ltime),
+    o("Q", E::Bool),
+    o("ET", E::Ltime),
+];
 const fn ctu(t: Elementary) -> [FbParam; 5] {
     [
         i("CU", E::Bool),
@@ -713,6 +719,7 @@ pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
         StdFb::Sr => SR,
         StdFb::Rs => RS,
         StdFb::Ton | StdFb::Tof | StdFb::Tp => TIMER,
+        StdFb::TonLtime | StdFb::TofLtime | StdFb::TpLtime => LTIMER,
         StdFb::Ctu => CTU,
         StdFb::Ctd => CTD,
         StdFb::Ctud => CTUD,
@@ -787,6 +794,9 @@ pub fn fb_doc(fb: StdFb) -> &'static str {
         StdFb::Ton => "on-delay timer: Q goes TRUE when IN has been TRUE for PT",
         StdFb::Tof => "off-delay timer: Q stays TRUE for PT after IN goes FALSE",
         StdFb::Tp => "pulse timer: Q is TRUE for PT from a rising edge of IN",
+        StdFb::TonLtime => "on-delay timer on LTIME: Q goes TRUE when IN has been TRUE for PT",
+        StdFb::TofLtime => "off-delay timer on LTIME: Q stays TRUE for PT after IN goes FALSE",
+        StdFb::TpLtime => "pulse timer on LTIME: Q is TRUE for PT from a rising edge of IN",
         StdFb::Ctu | StdFb::CtuDint | StdFb::CtuLint | StdFb::CtuUdint | StdFb::CtuUlint => {
             "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets"
         }
