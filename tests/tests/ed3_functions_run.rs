@@ -5,6 +5,11 @@
 //!   `TON_TIME` ... as the TIME timers (before: E1003 "unknown type `TON_LTIME`", E1003 for `LTON`);
 //!   a TIME timer given an LTIME PT is E1012 with a hint naming the LTIME timer (before: the hint
 //!   named only LTIME_TO_TIME).
+//! - the functions with outputs of Table 36, `SPLIT_DATE`, `SPLIT_TOD`, `SPLIT_LTOD`, `SPLIT_DT`,
+//!   `SPLIT_LDT`, in ST and IL, into integer variables of any width that holds the part, with EN and
+//!   ENO (before: E1019 "unknown function `SPLIT_DT`"); a call without formal outputs or without IN
+//!   is E1062, a part into a variable too narrow for it (a YEAR into SINT) or not an integer is
+//!   E1012.
 
 mod common;
 use common::{check_text, run_text};
@@ -41,11 +46,17 @@ fn the_ltime_timers_run_as_the_time_timers() {
     };
     let ms = |v: &[&str]| -> Vec<String> { v.iter().map(|s| format!("T#{s}")).collect() };
     let ton_q = ["0", "0", "0", "1", "0", "0", "0", "0", "0"];
-    let ton_et = ms(&["0ms", "10ms", "20ms", "25ms", "0ms", "0ms", "0ms", "0ms", "0ms"]);
+    let ton_et = ms(&[
+        "0ms", "10ms", "20ms", "25ms", "0ms", "0ms", "0ms", "0ms", "0ms",
+    ]);
     let tp_q = ["1", "1", "1", "0", "0", "0", "0", "0", "0"];
-    let tp_et = ms(&["0ms", "10ms", "20ms", "25ms", "0ms", "0ms", "0ms", "0ms", "0ms"]);
+    let tp_et = ms(&[
+        "0ms", "10ms", "20ms", "25ms", "0ms", "0ms", "0ms", "0ms", "0ms",
+    ]);
     let tof_q = ["1", "1", "1", "1", "1", "1", "1", "0", "0"];
-    let tof_et = ms(&["0ms", "0ms", "0ms", "0ms", "0ms", "10ms", "20ms", "25ms", "25ms"]);
+    let tof_et = ms(&[
+        "0ms", "0ms", "0ms", "0ms", "0ms", "10ms", "20ms", "25ms", "25ms",
+    ]);
     for (fbs, q, et) in [
         (["t1", "t2", "t3", "t4"].as_slice(), &ton_q, &ton_et),
         (["p1", "p2", "p3"].as_slice(), &tp_q, &tp_et),
@@ -88,7 +99,10 @@ fn the_vendor_timer_names_stay_free_for_the_project() {
     let (code, lines) = check_text("own.st", src);
     assert_eq!((code, lines.clone()), (Some(0), vec![]), "{lines:?}");
     let (trace, _) = run_text("own.st", src, 2, "main.q,main.ltp");
-    assert_eq!(trace, "cycle,time_ms,main.q,main.ltp\n0,0,0,1.5\n1,10,0,3\n");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.q,main.ltp\n0,0,0,1.5\n1,10,0,3\n"
+    );
 }
 
 /// A TIME timer given an LTIME PT: one E1012 whose hint names the LTIME timer of its family.
@@ -101,6 +115,73 @@ fn an_ltime_pt_on_a_time_timer_names_the_ltime_timer() {
     assert_eq!(
         lines,
         ["pt.st:6:24: error[E1012]: PT of TOF is TIME, not LTIME (hint: declare the instance TOF_LTIME (edition 3's timer on LTIME), or convert explicitly with LTIME_TO_TIME)"]
+    );
+}
+
+/// Every SPLIT function on values whose parts all differ, into outputs of every integer width that
+/// holds them: a DT on a leap day one second before the next day (and, two seconds later, the next
+/// day), an LDT before 1970 (negative nanoseconds), a DATE, a TOD and an LTOD whose sub-millisecond
+/// digits are cut (not rounded), a part left out.
+#[test]
+fn the_split_functions_give_every_part() {
+    let src = "PROGRAM main\nVAR\n  dt1 : DT := DT#2024-02-29-23:59:58.123;\n  \
+               ldt1 : LDT := LDT#1969-12-31-01:02:03.456789;\n  \
+               y : INT; mo : USINT; d : SINT; h : DINT; mi : LINT; s : UINT; ms : UDINT;\n  \
+               y2, mo2, d2, h2, mi2, s2, ms2 : INT;\n  dy : ULINT; dm, dd : INT;\n  \
+               th, tm, ts, tms : INT;\n  lh, lms : INT;\nEND_VAR\n  \
+               SPLIT_DT(IN := dt1, YEAR => y, MONTH => mo, DAY => d, HOUR => h, MINUTE => mi, SECOND => s, MILLISECOND => ms);\n  \
+               SPLIT_LDT(IN := ldt1, YEAR => y2, MONTH => mo2, DAY => d2, HOUR => h2, MINUTE => mi2, SECOND => s2, MILLISECOND => ms2);\n  \
+               SPLIT_DATE(IN := D#2000-03-01, YEAR => dy, MONTH => dm, DAY => dd);\n  \
+               SPLIT_TOD(IN := TOD#07:08:09.010, HOUR => th, MINUTE => tm, SECOND => ts, MILLISECOND => tms);\n  \
+               SPLIT_LTOD(IN := LTOD#22:00:00.999999, HOUR => lh, MILLISECOND => lms);\n  \
+               dt1 := ADD_DT_TIME(dt1, T#2s);\nEND_PROGRAM\n";
+    let watch = "main.y,main.mo,main.d,main.h,main.mi,main.s,main.ms,main.y2,main.mo2,main.d2,main.h2,main.mi2,main.s2,main.ms2,main.dy,main.dm,main.dd,main.th,main.tm,main.ts,main.tms,main.lh,main.lms";
+    let (trace, _) = run_text("split.st", src, 2, watch);
+    assert_eq!(
+        trace,
+        format!(
+            "cycle,time_ms,{}\n\
+             0,0,2024,2,29,23,59,58,123,1969,12,31,1,2,3,456,2000,3,1,7,8,9,10,22,999\n\
+             1,10,2024,3,1,0,0,0,123,1969,12,31,1,2,3,456,2000,3,1,7,8,9,10,22,999\n",
+            watch.replace("main.", "main.")
+        )
+    );
+}
+
+/// In IL (a formal call of the function, and `CAL`), and with EN: FALSE leaves the outputs as they
+/// were and ENO FALSE, TRUE splits.
+#[test]
+fn split_runs_in_il_and_with_en() {
+    let il = "PROGRAM main\nVAR\n  d : INT := 5;\n  m : INT;\n  e : BOOL;\n  ok : BOOL := TRUE;\n  h : INT;\nEND_VAR\n  \
+              SPLIT_DATE(EN := e, IN := D#2001-02-03, DAY => d, MONTH => m, ENO => ok)\n  \
+              CAL SPLIT_TOD(IN := TOD#13:14:15, HOUR => h)\n  \
+              LD TRUE\n  ST e\nEND_PROGRAM\n";
+    let (trace, _) = run_text("split.il", il, 2, "main.d,main.m,main.ok,main.h");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.d,main.m,main.ok,main.h\n0,0,5,0,0,13\n1,10,3,2,1,13\n"
+    );
+}
+
+/// A SPLIT call without formal outputs or without IN is one E1062 each; a part into a variable
+/// that cannot hold it, or that is no integer, is E1012; an IN of another type is E1012.
+#[test]
+fn bad_split_calls_are_located_errors() {
+    let src = "PROGRAM main\nVAR\n  y : SINT;\n  m : INT;\n  r : REAL;\n  d : DATE;\nEND_VAR\n  \
+               SPLIT_DATE(d, m, m, m);\n  \
+               SPLIT_DATE(YEAR => m);\n  \
+               SPLIT_DATE(IN := d, YEAR => y, MONTH => r, DAY => m);\n  \
+               SPLIT_DATE(IN := T#1s, DAY => m);\nEND_PROGRAM\n";
+    let heads = common::rejected_heads("bad.st", src);
+    assert_eq!(
+        heads,
+        [
+            "bad.st:8:3: error[E1062]: SPLIT_DATE gives its parts as outputs: it needs a formal call",
+            "bad.st:9:3: error[E1062]: SPLIT_DATE without its input IN",
+            "bad.st:10:31: error[E1012]: output YEAR of SPLIT_DATE (1677..2262) cannot be stored into SINT",
+            "bad.st:10:43: error[E1012]: output MONTH of SPLIT_DATE (1..12) cannot be stored into REAL",
+            "bad.st:11:20: error[E1012]: IN of SPLIT_DATE is DATE, not TIME",
+        ]
     );
 }
 

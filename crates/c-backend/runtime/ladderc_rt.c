@@ -465,6 +465,21 @@ IEC_INT ladderc_day_of_week(int64_t date) {
     return (IEC_INT)(w < 0 ? w + 7 : w);
 }
 
+void ladderc_split(int64_t ns, IEC_LINT parts[7]) {
+    int64_t days = ns / LADDERC_NS_PER_DAY - (ns % LADDERC_NS_PER_DAY < 0);
+    int64_t rem = ns - days * LADDERC_NS_PER_DAY; /* 0 .. one day */
+    int64_t y;
+    unsigned m, d;
+    civil_from_days(days, &y, &m, &d);
+    parts[0] = y;
+    parts[1] = (IEC_LINT)m;
+    parts[2] = (IEC_LINT)d;
+    parts[3] = rem / 3600000000000LL;
+    parts[4] = rem / 60000000000LL % 60;
+    parts[5] = rem / 1000000000LL % 60;
+    parts[6] = rem / 1000000LL % 1000;
+}
+
 static int parse_date(const char **sp, int64_t *days) {
     int y, m, d, n = 0;
     if (sscanf(*sp, "%4d-%2d-%2d%n", &y, &m, &d, &n) != 3 || m < 1 || m > 12 || d < 1 || d > 31) return -1;

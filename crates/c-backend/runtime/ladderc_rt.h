@@ -480,6 +480,10 @@ IEC_TOD ladderc_concat_tod(int64_t hour, int64_t minute, int64_t second, int64_t
 IEC_DT ladderc_concat_dt(int64_t year, int64_t month, int64_t day, int64_t hour, int64_t minute, int64_t second,
                          int64_t ms);
 IEC_INT ladderc_day_of_week(int64_t date);
+/* Edition 3's SPLIT_DATE, SPLIT_TOD, SPLIT_LTOD, SPLIT_DT, SPLIT_LDT: the parts of a date, time of
+ * day or date and time (nanoseconds since 1970-01-01, or since midnight): parts[0..6] are the year,
+ * month, day, hour, minute, second and millisecond (a time of day is of 1970-01-01). */
+void ladderc_split(int64_t ns, IEC_LINT parts[7]);
 
 /* ------------------------------------------------------------------ strings */
 void ladderc_string_set(IEC_STRING *dst, const char *src, size_t len, unsigned cap);

@@ -183,7 +183,9 @@ pub static STD_FBS: &[StdFb] = &[
 /// `TON_TIME` is `TON`, `LTON` is `TON_LTIME`: `il_frontend::sema::StdFb::from_name`).
 pub fn std_fb(name: &str) -> Option<&'static StdFb> {
     let fb = il_frontend::sema::StdFb::from_name(name.trim())?;
-    STD_FBS.iter().find(|f| f.name.eq_ignore_ascii_case(fb.name()))
+    STD_FBS
+        .iter()
+        .find(|f| f.name.eq_ignore_ascii_case(fb.name()))
 }
 
 /// The IEC 61131-3 name of a standard block's input as CODESYS and TwinCAT name it (their standard

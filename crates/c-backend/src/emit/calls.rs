@@ -317,6 +317,9 @@ impl Gen<'_> {
     ) {
         let span = i.span;
         match info.callee.clone() {
+            Some(Callee::Std { name, .. }) if name.starts_with("SPLIT_") => {
+                self.split_call(b, info, args, span)
+            }
             Some(Callee::Std { name, ty, result }) => {
                 let after = info.cr_after.clone().unwrap_or(result.clone());
                 let mut vals = Vec::new();
@@ -359,6 +362,63 @@ impl Gen<'_> {
             Some(Callee::UserFunction(id)) => self.user_function_call(b, i, info, id, args),
             _ => self.unsupported(span, "this function call"),
         }
+    }
+
+    /// Edition 3's `SPLIT_DT(IN := v, YEAR => y, ...)` ...: the parts into a block-scoped array
+    /// (`ladderc_split`), each stored into its variable (sema checked that it holds the part's range).
+    /// With EN FALSE the function does not run: its outputs are not written.
+    fn split_call(&mut self, b: &mut Body, info: &InstrFacts, args: &CallArgs, span: Span) {
+        let Some(input) = info
+            .args
+            .iter()
+            .find(|a| !a.output && a.param == "IN")
+            .cloned()
+        else {
+            return;
+        };
+        let Some(v) = self.arg_value(b, info, args, &input, span) else {
+            return;
+        };
+        let (en, eno) = self.en_eno(b, args);
+        b.line("{");
+        b.indent += 1;
+        if let Some(e) = &en {
+            b.line_fmt(format_args!("if ({e}) {{"));
+            b.indent += 1;
+        }
+        let parts = b.temp();
+        b.line_fmt(format_args!("IEC_LINT {parts}[7];"));
+        b.line_fmt(format_args!("ladderc_split((int64_t)({v}), {parts});"));
+        for out in info.args.iter().filter(|a| a.output) {
+            let Some(k) = il_frontend::sema::stdlib::SPLIT_PARTS
+                .iter()
+                .position(|p| p.0 == out.param)
+            else {
+                continue;
+            };
+            let ArgSource::Written(w) = out.source else {
+                continue;
+            };
+            let Some((o, _)) = Self::written_arg(args, w) else {
+                continue;
+            };
+            if let Some(target) = self.operand_place(b.scope, o) {
+                let val = convert(
+                    &cfmt!("{parts}[{k}]"),
+                    &Type::Elementary(Elementary::Lint),
+                    target.ty(),
+                );
+                let line = self.store(&target, &val);
+                b.line(&line);
+            }
+        }
+        if en.is_some() {
+            b.indent -= 1;
+            b.line("}");
+        }
+        b.indent -= 1;
+        b.line("}");
+        self.store_eno(b, en.as_deref(), eno);
     }
 
     /// `EN := e` and `ENO => v` of a formal call of a function or conversion: the value of EN

@@ -322,6 +322,76 @@ pub static FUNCTIONS: &[StdFunction] = &[
     f("DAY_OF_WEEK", &[p("IN", Fixed(E::Date))], false, Ret::Fixed(E::Int), "the day of the week of a DATE: 0 Sunday ... 6 Saturday"),
 ];
 
+/// One of edition 3's functions with outputs, `SPLIT_DATE`, `SPLIT_TOD`, `SPLIT_LTOD`, `SPLIT_DT`,
+/// `SPLIT_LDT` (Table 36): the input `IN` and the parts it splits into, each an ANY_INT output.
+#[derive(Debug, Clone, Copy)]
+pub struct Split {
+    /// The function's name, upper case.
+    pub name: &'static str,
+    /// The type of `IN`.
+    pub input: Elementary,
+    /// The outputs in order (a subset of [`SPLIT_PARTS`]).
+    pub outputs: &'static [&'static str],
+}
+
+/// Every part a SPLIT function gives, in the order of `ladderc_split`'s array, with its range
+/// (DATE and DT span 1677-09-22 .. 2262-04-11 here, int64 nanoseconds).
+pub const SPLIT_PARTS: [(&str, i128, i128); 7] = [
+    ("YEAR", 1677, 2262),
+    ("MONTH", 1, 12),
+    ("DAY", 1, 31),
+    ("HOUR", 0, 23),
+    ("MINUTE", 0, 59),
+    ("SECOND", 0, 59),
+    ("MILLISECOND", 0, 999),
+];
+
+const DATE_PARTS: &[&str] = &["YEAR", "MONTH", "DAY"];
+const TOD_PARTS: &[&str] = &["HOUR", "MINUTE", "SECOND", "MILLISECOND"];
+const DT_PARTS: &[&str] = &[
+    "YEAR",
+    "MONTH",
+    "DAY",
+    "HOUR",
+    "MINUTE",
+    "SECOND",
+    "MILLISECOND",
+];
+
+/// Edition 3's SPLIT functions (Table 36; the 4diac FORTE and trust-platform signatures).
+pub const SPLITS: [Split; 5] = [
+    Split {
+        name: "SPLIT_DATE",
+        input: E::Date,
+        outputs: DATE_PARTS,
+    },
+    Split {
+        name: "SPLIT_TOD",
+        input: E::Tod,
+        outputs: TOD_PARTS,
+    },
+    Split {
+        name: "SPLIT_LTOD",
+        input: E::Ltod,
+        outputs: TOD_PARTS,
+    },
+    Split {
+        name: "SPLIT_DT",
+        input: E::Dt,
+        outputs: DT_PARTS,
+    },
+    Split {
+        name: "SPLIT_LDT",
+        input: E::Ldt,
+        outputs: DT_PARTS,
+    },
+];
+
+/// A SPLIT function by name, case-insensitively.
+pub fn split(name: &str) -> Option<&'static Split> {
+    SPLITS.iter().find(|f| f.name.eq_ignore_ascii_case(name))
+}
+
 /// Whether the standard function `name` (upper case, as [`StdFunction::name`]) is one edition 3 added
 /// to edition 2's (Table 37's `CONCAT_DATE`, `CONCAT_TOD`, `CONCAT_DT`, `DAY_OF_WEEK`): libraries
 /// written for edition 2 (OSCAT) declare functions of these names, and a call of the name calls the
