@@ -10,6 +10,9 @@
 //!   ENO (before: E1019 "unknown function `SPLIT_DT`"); a call without formal outputs or without IN
 //!   is E1062, a part into a variable too narrow for it (a YEAR into SINT) or not an integer is
 //!   E1012.
+//! - the endianness conversions, `TO_BIG_ENDIAN`, `TO_LITTLE_ENDIAN`, `FROM_BIG_ENDIAN`,
+//!   `FROM_LITTLE_ENDIAN`, on every width of ANY_INT, ANY_BIT and ANY_REAL, on values whose bytes
+//!   all differ (before: E1019 "unknown function `TO_BIG_ENDIAN`"); a STRING or TIME is E1004.
 
 mod common;
 use common::{check_text, run_text};
@@ -181,6 +184,91 @@ fn bad_split_calls_are_located_errors() {
             "bad.st:10:31: error[E1012]: output YEAR of SPLIT_DATE (1677..2262) cannot be stored into SINT",
             "bad.st:10:43: error[E1012]: output MONTH of SPLIT_DATE (1..12) cannot be stored into REAL",
             "bad.st:11:20: error[E1012]: IN of SPLIT_DATE is DATE, not TIME",
+        ]
+    );
+}
+
+/// On this (little-endian) host, TO_BIG_ENDIAN and FROM_BIG_ENDIAN reverse the bytes of every
+/// type wider than a byte and the LITTLE ones keep them; the generated C orders bytes in memory
+/// (no host assumption), so a round trip gives the value back on any host. REAL and LREAL: the
+/// bytes of 1.0 reversed (0x0000803F and 0x000000000000F03F as numbers); an untyped literal takes
+/// the type of the variable it is stored into.
+#[test]
+fn the_endianness_conversions_order_the_bytes() {
+    let src = "PROGRAM main\nVAR\n  \
+               w : WORD := 16#1234; i : INT := -2; d : DWORD := 16#11223344; di : DINT := 16#01020304;\n  \
+               l : LWORD := 16#0102030405060708; li : LINT := -2; u : UINT := 16#00FF; ud : UDINT := 1;\n  \
+               r : REAL := 1.0; lr : LREAL := 1.0; b : BYTE := 16#AB; si : SINT := -5;\n  \
+               wb, wl, wfb, wfl, wlit : WORD; ib : INT; db, dl, dfb : DWORD; dib, dlit : DINT; lb : LWORD; lib : LINT;\n  \
+               ub : UINT; udb : UDINT; rb, rr : REAL; lrb, lrr : LREAL; bb : BYTE; sib : SINT; x : BOOL;\n\
+               END_VAR\n  \
+               wb := TO_BIG_ENDIAN(w);\n  wl := TO_LITTLE_ENDIAN(w);\n  \
+               wfb := FROM_BIG_ENDIAN(wb);\n  wfl := FROM_LITTLE_ENDIAN(w);\n  \
+               wlit := TO_BIG_ENDIAN(16#1234);\n  dlit := TO_BIG_ENDIAN(16#1234);\n  \
+               ib := TO_BIG_ENDIAN(i);\n  db := TO_BIG_ENDIAN(d);\n  dl := TO_LITTLE_ENDIAN(d);\n  \
+               dfb := FROM_BIG_ENDIAN(TO_BIG_ENDIAN(d));\n  dib := FROM_BIG_ENDIAN(di);\n  \
+               lb := TO_BIG_ENDIAN(l);\n  lib := TO_BIG_ENDIAN(li);\n  ub := TO_BIG_ENDIAN(u);\n  \
+               udb := FROM_BIG_ENDIAN(ud);\n  rb := TO_BIG_ENDIAN(r);\n  rr := FROM_BIG_ENDIAN(rb);\n  \
+               lrb := TO_BIG_ENDIAN(lr);\n  lrr := FROM_BIG_ENDIAN(lrb);\n  \
+               bb := TO_BIG_ENDIAN(b);\n  sib := FROM_BIG_ENDIAN(si);\n  x := TO_BIG_ENDIAN(TRUE);\n\
+               END_PROGRAM\n";
+    let want = [
+        ("wb", "13330"), // 16#3412
+        ("wl", "4660"),  // 16#1234
+        ("wfb", "4660"),
+        ("wfl", "4660"),
+        ("wlit", "13330"),
+        ("dlit", "873594880"), // 16#34120000
+        ("ib", "-257"),        // 16#FFFE -> 16#FEFF
+        ("db", "1144201745"),  // 16#44332211
+        ("dl", "287454020"),   // 16#11223344
+        ("dfb", "287454020"),
+        ("dib", "67305985"),           // 16#04030201
+        ("lb", "578437695752307201"),  // 16#0807060504030201
+        ("lib", "-72057594037927937"), // 16#FEFFFFFFFFFFFFFF
+        ("ub", "65280"),               // 16#FF00
+        ("udb", "16777216"),           // 16#01000000
+        ("rb", "4.6006e-41"),
+        ("rr", "1"),
+        ("lrb", "3.03865194161742e-319"),
+        ("lrr", "1"),
+        ("bb", "171"),
+        ("sib", "-5"),
+        ("x", "1"),
+    ];
+    let watch: Vec<String> = want.iter().map(|(n, _)| format!("main.{n}")).collect();
+    let (trace, _) = run_text("endian.st", src, 1, &watch.join(","));
+    let row: Vec<String> = common::split_csv(trace.lines().nth(1).unwrap());
+    for (k, (n, v)) in want.iter().enumerate() {
+        assert_eq!(row[k + 2], *v, "{n}\n{trace}");
+    }
+}
+
+/// In IL, on the current result (`LD w` then `TO_BIG_ENDIAN`), and formally with EN FALSE (the
+/// result is 0, ENO FALSE).
+#[test]
+fn the_endianness_conversions_run_in_il() {
+    let il = "PROGRAM main\nVAR\n  w : WORD := 16#ABCD;\n  a, c : WORD;\n  ok : BOOL := TRUE;\nEND_VAR\n  \
+              LD w\n  TO_BIG_ENDIAN\n  ST a\n  \
+              TO_LITTLE_ENDIAN(EN := FALSE, IN := w, ENO => ok)\n  ST c\nEND_PROGRAM\n";
+    let (trace, _) = run_text("endian.il", il, 1, "main.a,main.c,main.ok");
+    // 16#CDAB
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.a,main.c,main.ok\n0,0,52651,0,0\n"
+    );
+}
+
+/// A value of another kind (a STRING, a TIME) is E1004 naming the classes the conversions take.
+#[test]
+fn the_endianness_conversions_refuse_other_types() {
+    let src = "PROGRAM main\nVAR\n  w : WORD;\n  s : STRING;\n  t : TIME;\nEND_VAR\n  \
+               w := TO_BIG_ENDIAN(s);\n  t := FROM_LITTLE_ENDIAN(t);\nEND_PROGRAM\n";
+    assert_eq!(
+        common::rejected_heads("types.st", src),
+        [
+            "types.st:7:8: error[E1004]: TO_BIG_ENDIAN is not defined for STRING",
+            "types.st:8:8: error[E1004]: FROM_LITTLE_ENDIAN is not defined for TIME",
         ]
     );
 }

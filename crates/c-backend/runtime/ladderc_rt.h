@@ -571,6 +571,38 @@ static inline void ladderc_store_bit(uint8_t *area, uint32_t offset, unsigned bi
     else area[offset] = (uint8_t)(area[offset] & (uint8_t)~LADDERC_BITMASK(bit));
 }
 static inline float ladderc_bits_to_real(uint32_t u) { float f; memcpy(&f, &u, sizeof f); return f; }
+/* Edition 3's endianness conversions of the n low bytes of v (n = 1, 2, 4 or 8), on any host:
+ * ladderc_to_endian gives the n-byte value whose bytes in memory are v's, most significant first
+ * (big) or least significant first; ladderc_from_endian reads the bytes of v's memory so. */
+static inline uint64_t ladderc_to_endian(uint64_t v, unsigned n, int big) {
+    unsigned char b[8] = {0};
+    unsigned i;
+    uint16_t r2;
+    uint32_t r4;
+    uint64_t r8;
+    for (i = 0; i < n && i < 8; i++) b[i] = (unsigned char)(v >> (8 * (big ? n - 1 - i : i)));
+    switch (n) {
+    case 1: return b[0];
+    case 2: memcpy(&r2, b, 2); return r2;
+    case 4: memcpy(&r4, b, 4); return r4;
+    default: memcpy(&r8, b, 8); return r8;
+    }
+}
+static inline uint64_t ladderc_from_endian(uint64_t v, unsigned n, int big) {
+    unsigned char b[8] = {0};
+    unsigned i;
+    uint16_t v2 = (uint16_t)v;
+    uint32_t v4 = (uint32_t)v;
+    uint64_t r = 0;
+    switch (n) {
+    case 1: b[0] = (unsigned char)v; break;
+    case 2: memcpy(b, &v2, 2); break;
+    case 4: memcpy(b, &v4, 4); break;
+    default: memcpy(b, &v, 8); break;
+    }
+    for (i = 0; i < n && i < 8; i++) r |= (uint64_t)b[i] << (8 * (big ? n - 1 - i : i));
+    return r;
+}
 static inline uint32_t ladderc_real_to_bits(float f) { uint32_t u; memcpy(&u, &f, sizeof u); return u; }
 static inline double ladderc_bits_to_lreal(uint64_t u) { double f; memcpy(&f, &u, sizeof f); return f; }
 static inline uint64_t ladderc_lreal_to_bits(double f) { uint64_t u; memcpy(&u, &f, sizeof u); return u; }

@@ -761,6 +761,30 @@ impl Gen<'_> {
                     vals[2]
                 ))
             }
+            "TO_BIG_ENDIAN" | "TO_LITTLE_ENDIAN" | "FROM_BIG_ENDIAN" | "FROM_LITTLE_ENDIAN" => {
+                let e = e?;
+                let v = vals.first()?;
+                let n = e.size_bytes();
+                if e == E::Bool || n <= 1 {
+                    return Some(v.clone());
+                }
+                let f = if name.starts_with("TO_") {
+                    "to"
+                } else {
+                    "from"
+                };
+                let big = u8::from(name.contains("BIG"));
+                let ct = ctypes::elementary(e);
+                Some(match e {
+                    E::Real => cfmt!(
+                        "ladderc_bits_to_real((uint32_t)ladderc_{f}_endian(ladderc_real_to_bits({v}), 4, {big}))"
+                    ),
+                    E::Lreal => cfmt!(
+                        "ladderc_bits_to_lreal(ladderc_{f}_endian(ladderc_lreal_to_bits({v}), 8, {big}))"
+                    ),
+                    _ => cfmt!("(({ct})ladderc_{f}_endian((uint64_t)({v}), {n}, {big}))"),
+                })
+            }
             "ABS" => {
                 let e = e?;
                 let v = vals.first()?;

@@ -26,6 +26,8 @@ pub enum Class {
     AnyBit,
     /// STRING and WSTRING (LEN, LEFT, CONCAT ...).
     AnyString,
+    /// ANY_INT, ANY_BIT and ANY_REAL: the types of edition 3's endianness conversions.
+    AnyNumBit,
 }
 
 impl Class {
@@ -39,6 +41,7 @@ impl Class {
             Class::AnyInt => "ANY_INT",
             Class::AnyBit => "ANY_BIT",
             Class::AnyString => "ANY_STRING",
+            Class::AnyNumBit => "ANY_INT, ANY_BIT or ANY_REAL",
         }
     }
     /// Whether `ty` belongs to the class (`Type::Error` belongs to every class).
@@ -57,6 +60,7 @@ impl Class {
             Class::AnyInt => ty.is_integer(),
             Class::AnyBit => ty.is_bit(),
             Class::AnyString => ty.is_string(),
+            Class::AnyNumBit => ty.is_numeric() || ty.is_bit(),
         }
     }
     /// Whether an untyped integer literal may take a type of this class (it can be any ANY_NUM or ANY_BIT).
@@ -320,6 +324,11 @@ pub static FUNCTIONS: &[StdFunction] = &[
         "the DT of CONCAT_DATE and CONCAT_TOD's parts",
     ),
     f("DAY_OF_WEEK", &[p("IN", Fixed(E::Date))], false, Ret::Fixed(E::Int), "the day of the week of a DATE: 0 Sunday ... 6 Saturday"),
+    // edition 3: endianness conversions (on any host: the bytes in memory, not the value, are ordered)
+    f("TO_BIG_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes in memory are IN's, most significant first"),
+    f("TO_LITTLE_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes in memory are IN's, least significant first"),
+    f("FROM_BIG_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes, most significant first, are IN's in memory"),
+    f("FROM_LITTLE_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes, least significant first, are IN's in memory"),
 ];
 
 /// One of edition 3's functions with outputs, `SPLIT_DATE`, `SPLIT_TOD`, `SPLIT_LTOD`, `SPLIT_DT`,
@@ -399,7 +408,14 @@ pub fn split(name: &str) -> Option<&'static Split> {
 pub fn edition3_only(name: &str) -> bool {
     matches!(
         name,
-        "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK"
+        "CONCAT_DATE"
+            | "CONCAT_TOD"
+            | "CONCAT_DT"
+            | "DAY_OF_WEEK"
+            | "TO_BIG_ENDIAN"
+            | "TO_LITTLE_ENDIAN"
+            | "FROM_BIG_ENDIAN"
+            | "FROM_LITTLE_ENDIAN"
     )
 }
 
