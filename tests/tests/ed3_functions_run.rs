@@ -9,7 +9,8 @@
 //!   `SPLIT_LDT`, in ST and IL, into integer variables of any width that holds the part, with EN and
 //!   ENO (before: E1019 "unknown function `SPLIT_DT`"); a call without formal outputs or without IN
 //!   is E1062, a part into a variable too narrow for it (a YEAR into SINT) or not an integer is
-//!   E1012.
+//!   E1012; and the long forms of Table 36's `CONCAT_TOD` and `CONCAT_DT`, `CONCAT_LTOD` and
+//!   `CONCAT_LDT`, which give back what SPLIT_LTOD and SPLIT_LDT split (before: E1019).
 //! - the endianness conversions, `TO_BIG_ENDIAN`, `TO_LITTLE_ENDIAN`, `FROM_BIG_ENDIAN`,
 //!   `FROM_LITTLE_ENDIAN`, on every width of ANY_INT, ANY_BIT and ANY_REAL, on values whose bytes
 //!   all differ (before: E1019 "unknown function `TO_BIG_ENDIAN`"); a STRING or TIME is E1004.
@@ -148,6 +149,27 @@ fn the_split_functions_give_every_part() {
              1,10,2024,3,1,0,0,0,123,1969,12,31,1,2,3,456,2000,3,1,7,8,9,10,22,999\n",
             watch.replace("main.", "main.")
         )
+    );
+}
+
+/// `CONCAT_LTOD` and `CONCAT_LDT` build the long forms from the parts `SPLIT_LTOD` and `SPLIT_LDT`
+/// give; an invalid part (a 13th month) gives 0 and the range flag (reported at the end of the
+/// run), as `CONCAT_DT`'s.
+#[test]
+fn concat_ltod_and_concat_ldt_join_the_parts() {
+    let src = "PROGRAM main\nVAR\n  t : LTOD;\n  l, bad : LDT;\n  y, mo, d, h, mi, s, ms : INT;\nEND_VAR\n  \
+               SPLIT_LDT(IN := LDT#2024-02-29-13:14:15.678, YEAR => y, MONTH => mo, DAY => d, HOUR => h, MINUTE => mi, SECOND => s, MILLISECOND => ms);\n  \
+               l := CONCAT_LDT(y, mo, d, h, mi, s, ms);\n  \
+               t := CONCAT_LTOD(HOUR := h, MINUTE := mi, SECOND := s, MILLISECOND := ms);\n  \
+               bad := CONCAT_LDT(2024, 13, 1, 0, 0, 0, 0);\nEND_PROGRAM\n";
+    let (trace, stderr) = run_text("concat.st", src, 1, "main.l,main.t,main.bad");
+    assert_eq!(
+        trace,
+        "cycle,time_ms,main.l,main.t,main.bad\n0,0,LDT#2024-02-29-13:14:15.678,LTOD#13:14:15.678,LDT#1970-01-01-00:00:00\n"
+    );
+    assert!(
+        stderr.contains("runtime: conversion out of range"),
+        "{stderr}"
     );
 }
 

@@ -665,22 +665,20 @@ impl Gen<'_> {
             n if super::datetime::is_datetime_function(n) => {
                 self.datetime_call(span, n, vals, tys, result)
             }
-            "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK" => {
-                let n = match name {
-                    "CONCAT_DATE" => 3,
-                    "CONCAT_TOD" => 4,
-                    "CONCAT_DT" => 7,
-                    _ => 1,
+            "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "CONCAT_LTOD" | "CONCAT_LDT"
+            | "DAY_OF_WEEK" => {
+                // the long forms count nanoseconds as the short ones do here
+                let (n, c) = match name {
+                    "CONCAT_DATE" => (3, "concat_date"),
+                    "CONCAT_TOD" | "CONCAT_LTOD" => (4, "concat_tod"),
+                    "CONCAT_DT" | "CONCAT_LDT" => (7, "concat_dt"),
+                    _ => (1, "day_of_week"),
                 };
                 if vals.len() != n {
                     return None;
                 }
                 let args: Vec<String> = vals.iter().map(|v| cfmt!("(int64_t)({v})")).collect();
-                Some(cfmt!(
-                    "ladderc_{}({})",
-                    name.to_ascii_lowercase(),
-                    args.join(", ")
-                ))
+                Some(cfmt!("ladderc_{c}({})", args.join(", ")))
             }
             "ADD" | "MUL" | "SUB" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
                 if !need(2) {

@@ -323,6 +323,28 @@ pub static FUNCTIONS: &[StdFunction] = &[
         Ret::Fixed(E::Dt),
         "the DT of CONCAT_DATE and CONCAT_TOD's parts",
     ),
+    f(
+        "CONCAT_LTOD",
+        &[p("HOUR", Own(AnyInt)), p("MINUTE", Own(AnyInt)), p("SECOND", Own(AnyInt)), p("MILLISECOND", Own(AnyInt))],
+        false,
+        Ret::Fixed(E::Ltod),
+        "the LTOD of an hour (0..23), minute, second (0..59) and millisecond (0..999)",
+    ),
+    f(
+        "CONCAT_LDT",
+        &[
+            p("YEAR", Own(AnyInt)),
+            p("MONTH", Own(AnyInt)),
+            p("DAY", Own(AnyInt)),
+            p("HOUR", Own(AnyInt)),
+            p("MINUTE", Own(AnyInt)),
+            p("SECOND", Own(AnyInt)),
+            p("MILLISECOND", Own(AnyInt)),
+        ],
+        false,
+        Ret::Fixed(E::Ldt),
+        "the LDT of CONCAT_DATE and CONCAT_LTOD's parts",
+    ),
     f("DAY_OF_WEEK", &[p("IN", Fixed(E::Date))], false, Ret::Fixed(E::Int), "the day of the week of a DATE: 0 Sunday ... 6 Saturday"),
     // edition 3: endianness conversions (on any host: the bytes in memory, not the value, are ordered)
     f("TO_BIG_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes in memory are IN's, most significant first"),
@@ -411,6 +433,8 @@ pub fn edition3_only(name: &str) -> bool {
         "CONCAT_DATE"
             | "CONCAT_TOD"
             | "CONCAT_DT"
+            | "CONCAT_LTOD"
+            | "CONCAT_LDT"
             | "DAY_OF_WEEK"
             | "TO_BIG_ENDIAN"
             | "TO_LITTLE_ENDIAN"
