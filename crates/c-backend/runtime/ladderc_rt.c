@@ -37,79 +37,84 @@ void ladderc_RS_body(ladderc_RS *fb) { fb->Q1 = (IEC_BOOL)(!fb->R1 && (fb->S || 
 /* ------------------------------------------------------------------ timers */
 static IEC_TIME elapsed_since(IEC_TIME start) { return ladderc_sub_IEC_LINT(ladderc_now, start); }
 
-void ladderc_TON_init(ladderc_TON *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
-void ladderc_TON_body(ladderc_TON *fb) {
-    IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
-    if (!fb->IN) {
-        fb->Q = 0;
-        fb->ET = 0;
-        fb->running = 0;
-        return;
-    }
-    if (!fb->running) {
-        fb->running = 1;
-        fb->start = ladderc_now;
-    }
-    {
-        IEC_TIME et = elapsed_since(fb->start);
-        if (et >= pt) {
-            fb->ET = pt;
-            fb->Q = 1;
-        } else {
-            fb->ET = et;
-            fb->Q = 0;
-        }
-    }
+/* TON, TOF, TP on TIME (S empty) and their edition-3 LTIME forms TON_LTIME ... (S _LTIME): the same
+ * bodies on PT and ET of type T (both count nanoseconds here). */
+#define LADDERC_TIMERS(S, T)                                                             \
+void ladderc_TON##S##_init(ladderc_TON##S *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; } \
+void ladderc_TON##S##_body(ladderc_TON##S *fb) {                                           \
+    IEC_##T pt = fb->PT < 0 ? 0 : fb->PT;                                                \
+    if (!fb->IN) {                                                                       \
+        fb->Q = 0;                                                                       \
+        fb->ET = 0;                                                                      \
+        fb->running = 0;                                                                 \
+        return;                                                                          \
+    }                                                                                    \
+    if (!fb->running) {                                                                  \
+        fb->running = 1;                                                                 \
+        fb->start = ladderc_now;                                                         \
+    }                                                                                    \
+    {                                                                                    \
+        IEC_##T et = elapsed_since(fb->start);                                           \
+        if (et >= pt) {                                                                  \
+            fb->ET = pt;                                                                 \
+            fb->Q = 1;                                                                   \
+        } else {                                                                         \
+            fb->ET = et;                                                                 \
+            fb->Q = 0;                                                                   \
+        }                                                                                \
+    }                                                                                    \
+}                                                                                        \
+                                                                                         \
+void ladderc_TOF##S##_init(ladderc_TOF##S *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; } \
+void ladderc_TOF##S##_body(ladderc_TOF##S *fb) {                                           \
+    IEC_##T pt = fb->PT < 0 ? 0 : fb->PT;                                                \
+    if (fb->IN) {                                                                        \
+        fb->Q = 1;                                                                       \
+        fb->ET = 0;                                                                      \
+        fb->running = 0;                                                                 \
+        return;                                                                          \
+    }                                                                                    \
+    if (!fb->Q) return; /* idle: ET keeps its value (PT after a completed delay) */      \
+    if (!fb->running) {                                                                  \
+        fb->running = 1;                                                                 \
+        fb->start = ladderc_now;                                                         \
+    }                                                                                    \
+    {                                                                                    \
+        IEC_##T et = elapsed_since(fb->start);                                           \
+        if (et >= pt) {                                                                  \
+            fb->ET = pt;                                                                 \
+            fb->Q = 0;                                                                   \
+            fb->running = 0;                                                             \
+        } else {                                                                         \
+            fb->ET = et;                                                                 \
+        }                                                                                \
+    }                                                                                    \
+}                                                                                        \
+                                                                                         \
+void ladderc_TP##S##_init(ladderc_TP##S *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }   \
+void ladderc_TP##S##_body(ladderc_TP##S *fb) {                                             \
+    IEC_##T pt = fb->PT < 0 ? 0 : fb->PT;                                                \
+    IEC_BOOL edge = (IEC_BOOL)(fb->IN && !fb->in_m);                                     \
+    fb->in_m = fb->IN ? 1u : 0u;                                                         \
+    if (!fb->running && edge && pt > 0) {                                                \
+        fb->running = 1;                                                                 \
+        fb->start = ladderc_now;                                                         \
+    }                                                                                    \
+    if (fb->running) {                                                                   \
+        IEC_##T et = elapsed_since(fb->start);                                           \
+        if (et >= pt) {                                                                  \
+            fb->running = 0;                                                             \
+            fb->Q = 0;                                                                   \
+            fb->ET = pt;                                                                 \
+        } else {                                                                         \
+            fb->Q = 1;                                                                   \
+            fb->ET = et;                                                                 \
+        }                                                                                \
+    }                                                                                    \
+    if (!fb->running && !fb->IN) fb->ET = 0;                                             \
 }
-
-void ladderc_TOF_init(ladderc_TOF *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
-void ladderc_TOF_body(ladderc_TOF *fb) {
-    IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
-    if (fb->IN) {
-        fb->Q = 1;
-        fb->ET = 0;
-        fb->running = 0;
-        return;
-    }
-    if (!fb->Q) return; /* idle: ET keeps its value (PT after a completed delay) */
-    if (!fb->running) {
-        fb->running = 1;
-        fb->start = ladderc_now;
-    }
-    {
-        IEC_TIME et = elapsed_since(fb->start);
-        if (et >= pt) {
-            fb->ET = pt;
-            fb->Q = 0;
-            fb->running = 0;
-        } else {
-            fb->ET = et;
-        }
-    }
-}
-
-void ladderc_TP_init(ladderc_TP *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
-void ladderc_TP_body(ladderc_TP *fb) {
-    IEC_TIME pt = fb->PT < 0 ? 0 : fb->PT;
-    IEC_BOOL edge = (IEC_BOOL)(fb->IN && !fb->in_m);
-    fb->in_m = fb->IN ? 1u : 0u;
-    if (!fb->running && edge && pt > 0) {
-        fb->running = 1;
-        fb->start = ladderc_now;
-    }
-    if (fb->running) {
-        IEC_TIME et = elapsed_since(fb->start);
-        if (et >= pt) {
-            fb->running = 0;
-            fb->Q = 0;
-            fb->ET = pt;
-        } else {
-            fb->Q = 1;
-            fb->ET = et;
-        }
-    }
-    if (!fb->running && !fb->IN) fb->ET = 0;
-}
+LADDERC_TIMERS(, TIME)
+LADDERC_TIMERS(_LTIME, LTIME)
 
 /* ------------------------------------------------------------------ counters */
 void ladderc_CTU_init(ladderc_CTU *fb) { memset(fb, 0, sizeof *fb); fb->ENO = 1; }
@@ -458,6 +463,21 @@ IEC_INT ladderc_day_of_week(int64_t date) {
     int64_t days = date / LADDERC_NS_PER_DAY - (date % LADDERC_NS_PER_DAY < 0);
     int64_t w = (days + 4) % 7; /* 1970-01-01 was a Thursday */
     return (IEC_INT)(w < 0 ? w + 7 : w);
+}
+
+void ladderc_split(int64_t ns, IEC_LINT parts[7]) {
+    int64_t days = ns / LADDERC_NS_PER_DAY - (ns % LADDERC_NS_PER_DAY < 0);
+    int64_t rem = ns - days * LADDERC_NS_PER_DAY; /* 0 .. one day */
+    int64_t y;
+    unsigned m, d;
+    civil_from_days(days, &y, &m, &d);
+    parts[0] = y;
+    parts[1] = (IEC_LINT)m;
+    parts[2] = (IEC_LINT)d;
+    parts[3] = rem / 3600000000000LL;
+    parts[4] = rem / 60000000000LL % 60;
+    parts[5] = rem / 1000000000LL % 60;
+    parts[6] = rem / 1000000LL % 1000;
 }
 
 static int parse_date(const char **sp, int64_t *days) {

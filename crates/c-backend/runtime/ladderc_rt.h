@@ -480,6 +480,10 @@ IEC_TOD ladderc_concat_tod(int64_t hour, int64_t minute, int64_t second, int64_t
 IEC_DT ladderc_concat_dt(int64_t year, int64_t month, int64_t day, int64_t hour, int64_t minute, int64_t second,
                          int64_t ms);
 IEC_INT ladderc_day_of_week(int64_t date);
+/* Edition 3's SPLIT_DATE, SPLIT_TOD, SPLIT_LTOD, SPLIT_DT, SPLIT_LDT: the parts of a date, time of
+ * day or date and time (nanoseconds since 1970-01-01, or since midnight): parts[0..6] are the year,
+ * month, day, hour, minute, second and millisecond (a time of day is of 1970-01-01). */
+void ladderc_split(int64_t ns, IEC_LINT parts[7]);
 
 /* ------------------------------------------------------------------ strings */
 void ladderc_string_set(IEC_STRING *dst, const char *src, size_t len, unsigned cap);
@@ -567,6 +571,38 @@ static inline void ladderc_store_bit(uint8_t *area, uint32_t offset, unsigned bi
     else area[offset] = (uint8_t)(area[offset] & (uint8_t)~LADDERC_BITMASK(bit));
 }
 static inline float ladderc_bits_to_real(uint32_t u) { float f; memcpy(&f, &u, sizeof f); return f; }
+/* Edition 3's endianness conversions of the n low bytes of v (n = 1, 2, 4 or 8), on any host:
+ * ladderc_to_endian gives the n-byte value whose bytes in memory are v's, most significant first
+ * (big) or least significant first; ladderc_from_endian reads the bytes of v's memory so. */
+static inline uint64_t ladderc_to_endian(uint64_t v, unsigned n, int big) {
+    unsigned char b[8] = {0};
+    unsigned i;
+    uint16_t r2;
+    uint32_t r4;
+    uint64_t r8;
+    for (i = 0; i < n && i < 8; i++) b[i] = (unsigned char)(v >> (8 * (big ? n - 1 - i : i)));
+    switch (n) {
+    case 1: return b[0];
+    case 2: memcpy(&r2, b, 2); return r2;
+    case 4: memcpy(&r4, b, 4); return r4;
+    default: memcpy(&r8, b, 8); return r8;
+    }
+}
+static inline uint64_t ladderc_from_endian(uint64_t v, unsigned n, int big) {
+    unsigned char b[8] = {0};
+    unsigned i;
+    uint16_t v2 = (uint16_t)v;
+    uint32_t v4 = (uint32_t)v;
+    uint64_t r = 0;
+    switch (n) {
+    case 1: b[0] = (unsigned char)v; break;
+    case 2: memcpy(b, &v2, 2); break;
+    case 4: memcpy(b, &v4, 4); break;
+    default: memcpy(b, &v, 8); break;
+    }
+    for (i = 0; i < n && i < 8; i++) r |= (uint64_t)b[i] << (8 * (big ? n - 1 - i : i));
+    return r;
+}
 static inline uint32_t ladderc_real_to_bits(float f) { uint32_t u; memcpy(&u, &f, sizeof u); return u; }
 static inline double ladderc_bits_to_lreal(uint64_t u) { double f; memcpy(&f, &u, sizeof f); return f; }
 static inline uint64_t ladderc_lreal_to_bits(double f) { uint64_t u; memcpy(&u, &f, sizeof u); return u; }
@@ -583,6 +619,10 @@ typedef struct { IEC_BOOL S, R1, Q1; IEC_BOOL ENO; } ladderc_RS;
 typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; IEC_BOOL ENO; } ladderc_TON;
 typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; IEC_BOOL ENO; } ladderc_TOF;
 typedef struct { IEC_BOOL IN; IEC_TIME PT; IEC_BOOL Q; IEC_TIME ET; IEC_BOOL running; IEC_TIME start; IEC_BOOL in_m; IEC_BOOL ENO; } ladderc_TP;
+/* Edition 3's LTIME timers TON_LTIME, TOF_LTIME, TP_LTIME (CODESYS's and TwinCAT's LTON, LTOF, LTP). */
+typedef struct { IEC_BOOL IN; IEC_LTIME PT; IEC_BOOL Q; IEC_LTIME ET; IEC_BOOL running; IEC_LTIME start; IEC_BOOL ENO; } ladderc_TON_LTIME;
+typedef struct { IEC_BOOL IN; IEC_LTIME PT; IEC_BOOL Q; IEC_LTIME ET; IEC_BOOL running; IEC_LTIME start; IEC_BOOL ENO; } ladderc_TOF_LTIME;
+typedef struct { IEC_BOOL IN; IEC_LTIME PT; IEC_BOOL Q; IEC_LTIME ET; IEC_BOOL running; IEC_LTIME start; IEC_BOOL in_m; IEC_BOOL ENO; } ladderc_TP_LTIME;
 typedef struct { IEC_BOOL CU, R; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cu_m; IEC_BOOL ENO; } ladderc_CTU;
 typedef struct { IEC_BOOL CD, LD; IEC_INT PV; IEC_BOOL Q; IEC_INT CV; IEC_BOOL cd_m; IEC_BOOL ENO; } ladderc_CTD;
 typedef struct { IEC_BOOL CU, CD, R, LD; IEC_INT PV; IEC_BOOL QU, QD; IEC_INT CV; IEC_BOOL cu_m, cd_m; IEC_BOOL ENO; } ladderc_CTUD;
@@ -609,6 +649,9 @@ LADDERC_FB_DECL(RS)
 LADDERC_FB_DECL(TON)
 LADDERC_FB_DECL(TOF)
 LADDERC_FB_DECL(TP)
+LADDERC_FB_DECL(TON_LTIME)
+LADDERC_FB_DECL(TOF_LTIME)
+LADDERC_FB_DECL(TP_LTIME)
 LADDERC_FB_DECL(CTU)
 LADDERC_FB_DECL(CTD)
 LADDERC_FB_DECL(CTUD)

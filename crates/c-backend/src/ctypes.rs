@@ -144,6 +144,12 @@ pub fn std_fb(fb: StdFb) -> (&'static str, &'static [(&'static str, Elementary, 
         ("Q", E::Bool, false),
         ("ET", E::Time, false),
     ];
+    const LTIMER: &[(&str, E, bool)] = &[
+        ("IN", E::Bool, true),
+        ("PT", E::Ltime, true),
+        ("Q", E::Bool, false),
+        ("ET", E::Ltime, false),
+    ];
     match fb {
         StdFb::RTrig => ("ladderc_R_TRIG", TRIG),
         StdFb::FTrig => ("ladderc_F_TRIG", TRIG),
@@ -166,6 +172,9 @@ pub fn std_fb(fb: StdFb) -> (&'static str, &'static [(&'static str, Elementary, 
         StdFb::Ton => ("ladderc_TON", TIMER),
         StdFb::Tof => ("ladderc_TOF", TIMER),
         StdFb::Tp => ("ladderc_TP", TIMER),
+        StdFb::TonLtime => ("ladderc_TON_LTIME", LTIMER),
+        StdFb::TofLtime => ("ladderc_TOF_LTIME", LTIMER),
+        StdFb::TpLtime => ("ladderc_TP_LTIME", LTIMER),
         StdFb::Ctu => ("ladderc_CTU", &const { ctu(E::Int) }),
         StdFb::Ctd => ("ladderc_CTD", &const { ctd(E::Int) }),
         StdFb::Ctud => ("ladderc_CTUD", &const { ctud(E::Int) }),

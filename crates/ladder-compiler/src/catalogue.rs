@@ -17,6 +17,8 @@ pub struct StdFb {
 
 const TIMER_IN: &[(&str, &str)] = &[("IN", "BOOL"), ("PT", "TIME")];
 const TIMER_OUT: &[(&str, &str)] = &[("Q", "BOOL"), ("ET", "TIME")];
+const LTIMER_IN: &[(&str, &str)] = &[("IN", "BOOL"), ("PT", "LTIME")];
+const LTIMER_OUT: &[(&str, &str)] = &[("Q", "BOOL"), ("ET", "LTIME")];
 
 /// The IEC 61131-3 standard function blocks (bistables, edge detectors, counters, timers) with their pins.
 pub static STD_FBS: &[StdFb] = &[
@@ -160,18 +162,30 @@ pub static STD_FBS: &[StdFb] = &[
         inputs: TIMER_IN,
         outputs: TIMER_OUT,
     },
+    StdFb {
+        name: "TP_LTIME",
+        inputs: LTIMER_IN,
+        outputs: LTIMER_OUT,
+    },
+    StdFb {
+        name: "TON_LTIME",
+        inputs: LTIMER_IN,
+        outputs: LTIMER_OUT,
+    },
+    StdFb {
+        name: "TOF_LTIME",
+        inputs: LTIMER_IN,
+        outputs: LTIMER_OUT,
+    },
 ];
 
-/// A standard FB by name, case-insensitively; `CTU_INT`, `CTD_INT`, `CTUD_INT` (3rd edition) are the INT
-/// counters `CTU`, `CTD`, `CTUD`, as in sema.
+/// A standard FB by name, case-insensitively, under every name sema knows it by (`CTU_INT` is `CTU`,
+/// `TON_TIME` is `TON`, `LTON` is `TON_LTIME`: `il_frontend::sema::StdFb::from_name`).
 pub fn std_fb(name: &str) -> Option<&'static StdFb> {
-    let name = match name.to_ascii_uppercase().as_str() {
-        "CTU_INT" => "CTU",
-        "CTD_INT" => "CTD",
-        "CTUD_INT" => "CTUD",
-        _ => name,
-    };
-    STD_FBS.iter().find(|f| f.name.eq_ignore_ascii_case(name))
+    let fb = il_frontend::sema::StdFb::from_name(name.trim())?;
+    STD_FBS
+        .iter()
+        .find(|f| f.name.eq_ignore_ascii_case(fb.name()))
 }
 
 /// The IEC 61131-3 name of a standard block's input as CODESYS and TwinCAT name it (their standard
@@ -180,9 +194,7 @@ pub fn std_fb(name: &str) -> Option<&'static StdFb> {
 /// pin (see `il_frontend::sema::stdlib::vendor_param_alias`).
 pub fn vendor_pin_alias(block: &str, pin: &str) -> Option<&'static str> {
     let block = block.trim();
-    let fb = il_frontend::sema::StdFb::ALL
-        .into_iter()
-        .find(|f| f.name().eq_ignore_ascii_case(block))?;
+    let fb = il_frontend::sema::StdFb::from_name(block)?;
     il_frontend::sema::stdlib::vendor_param_alias(fb, pin)
 }
 

@@ -317,6 +317,9 @@ impl Gen<'_> {
     ) {
         let span = i.span;
         match info.callee.clone() {
+            Some(Callee::Std { name, .. }) if name.starts_with("SPLIT_") => {
+                self.split_call(b, info, args, span)
+            }
             Some(Callee::Std { name, ty, result }) => {
                 let after = info.cr_after.clone().unwrap_or(result.clone());
                 let mut vals = Vec::new();
@@ -359,6 +362,63 @@ impl Gen<'_> {
             Some(Callee::UserFunction(id)) => self.user_function_call(b, i, info, id, args),
             _ => self.unsupported(span, "this function call"),
         }
+    }
+
+    /// Edition 3's `SPLIT_DT(IN := v, YEAR => y, ...)` ...: the parts into a block-scoped array
+    /// (`ladderc_split`), each stored into its variable (sema checked that it holds the part's range).
+    /// With EN FALSE the function does not run: its outputs are not written.
+    fn split_call(&mut self, b: &mut Body, info: &InstrFacts, args: &CallArgs, span: Span) {
+        let Some(input) = info
+            .args
+            .iter()
+            .find(|a| !a.output && a.param == "IN")
+            .cloned()
+        else {
+            return;
+        };
+        let Some(v) = self.arg_value(b, info, args, &input, span) else {
+            return;
+        };
+        let (en, eno) = self.en_eno(b, args);
+        b.line("{");
+        b.indent += 1;
+        if let Some(e) = &en {
+            b.line_fmt(format_args!("if ({e}) {{"));
+            b.indent += 1;
+        }
+        let parts = b.temp();
+        b.line_fmt(format_args!("IEC_LINT {parts}[7];"));
+        b.line_fmt(format_args!("ladderc_split((int64_t)({v}), {parts});"));
+        for out in info.args.iter().filter(|a| a.output) {
+            let Some(k) = il_frontend::sema::stdlib::SPLIT_PARTS
+                .iter()
+                .position(|p| p.0 == out.param)
+            else {
+                continue;
+            };
+            let ArgSource::Written(w) = out.source else {
+                continue;
+            };
+            let Some((o, _)) = Self::written_arg(args, w) else {
+                continue;
+            };
+            if let Some(target) = self.operand_place(b.scope, o) {
+                let val = convert(
+                    &cfmt!("{parts}[{k}]"),
+                    &Type::Elementary(Elementary::Lint),
+                    target.ty(),
+                );
+                let line = self.store(&target, &val);
+                b.line(&line);
+            }
+        }
+        if en.is_some() {
+            b.indent -= 1;
+            b.line("}");
+        }
+        b.indent -= 1;
+        b.line("}");
+        self.store_eno(b, en.as_deref(), eno);
     }
 
     /// `EN := e` and `ENO => v` of a formal call of a function or conversion: the value of EN
@@ -605,22 +665,20 @@ impl Gen<'_> {
             n if super::datetime::is_datetime_function(n) => {
                 self.datetime_call(span, n, vals, tys, result)
             }
-            "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK" => {
-                let n = match name {
-                    "CONCAT_DATE" => 3,
-                    "CONCAT_TOD" => 4,
-                    "CONCAT_DT" => 7,
-                    _ => 1,
+            "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "CONCAT_LTOD" | "CONCAT_LDT"
+            | "DAY_OF_WEEK" => {
+                // the long forms count nanoseconds as the short ones do here
+                let (n, c) = match name {
+                    "CONCAT_DATE" => (3, "concat_date"),
+                    "CONCAT_TOD" | "CONCAT_LTOD" => (4, "concat_tod"),
+                    "CONCAT_DT" | "CONCAT_LDT" => (7, "concat_dt"),
+                    _ => (1, "day_of_week"),
                 };
                 if vals.len() != n {
                     return None;
                 }
                 let args: Vec<String> = vals.iter().map(|v| cfmt!("(int64_t)({v})")).collect();
-                Some(cfmt!(
-                    "ladderc_{}({})",
-                    name.to_ascii_lowercase(),
-                    args.join(", ")
-                ))
+                Some(cfmt!("ladderc_{c}({})", args.join(", ")))
             }
             "ADD" | "MUL" | "SUB" | "DIV" | "MOD" | "AND" | "OR" | "XOR" => {
                 if !need(2) {
@@ -700,6 +758,30 @@ impl Gen<'_> {
                     vals[1],
                     vals[2]
                 ))
+            }
+            "TO_BIG_ENDIAN" | "TO_LITTLE_ENDIAN" | "FROM_BIG_ENDIAN" | "FROM_LITTLE_ENDIAN" => {
+                let e = e?;
+                let v = vals.first()?;
+                let n = e.size_bytes();
+                if e == E::Bool || n <= 1 {
+                    return Some(v.clone());
+                }
+                let f = if name.starts_with("TO_") {
+                    "to"
+                } else {
+                    "from"
+                };
+                let big = u8::from(name.contains("BIG"));
+                let ct = ctypes::elementary(e);
+                Some(match e {
+                    E::Real => cfmt!(
+                        "ladderc_bits_to_real((uint32_t)ladderc_{f}_endian(ladderc_real_to_bits({v}), 4, {big}))"
+                    ),
+                    E::Lreal => cfmt!(
+                        "ladderc_bits_to_lreal(ladderc_{f}_endian(ladderc_lreal_to_bits({v}), 8, {big}))"
+                    ),
+                    _ => cfmt!("(({ct})ladderc_{f}_endian((uint64_t)({v}), {n}, {big}))"),
+                })
             }
             "ABS" => {
                 let e = e?;

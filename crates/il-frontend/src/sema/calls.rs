@@ -434,6 +434,16 @@ impl Body<'_, '_> {
             .get(&name.key())
             .copied()
             .filter(|id| self.a.model.pous[id.0 as usize].kind == PouKind::Function);
+        if let Some(f) = stdlib::split(&name.name).filter(|_| user_fn.is_none()) {
+            // a function with outputs and no result: nothing is left for the current result
+            self.split_call(span, f, args, rec);
+            if formal {
+                self.load(st, Ty::Known(Type::Error), span);
+            }
+            st.cr.ty = None;
+            st.cr.fresh = None;
+            return;
+        }
         let result = if let Some(conv) = stdlib::conversion(&name.name) {
             self.conversion_call(span, name, conv, args, formal, st, rec)
         } else if let Some(f) = stdlib::function(&name.name).filter(|f| {
@@ -541,6 +551,104 @@ impl Body<'_, '_> {
         } else {
             st.cr.ty = Some(result);
             st.cr.fresh = Some(span);
+        }
+    }
+
+    /// `SPLIT_DT(IN := dt, YEAR => y, ...)` (edition 3, Table 36): `IN` and EN like a function's
+    /// inputs, ENO like its output; each part goes to an ANY_INT variable wide enough for every value
+    /// of the part (E1012 otherwise); only a formal call gives outputs (E1062).
+    fn split_call(
+        &mut self,
+        span: Span,
+        f: &'static stdlib::Split,
+        args: &CallArgs,
+        rec: &mut Rec,
+    ) {
+        rec.callee = Some(Callee::Std {
+            name: f.name,
+            ty: Type::Elementary(f.input),
+            result: Type::Error,
+        });
+        let CallArgs::Formal(fargs) = args else {
+            self.a
+                .error(
+                    code::E1062,
+                    span,
+                    format!(
+                        "{} gives its parts as outputs: it needs a formal call",
+                        f.name
+                    ),
+                )
+                .label("no formal outputs")
+                .hint(format!(
+                    "write {}(IN := value, {} => variable, ...)",
+                    f.name, f.outputs[0]
+                ));
+            self.args_unchecked(args);
+            return;
+        };
+        let mut params: Vec<(String, ParamDir, Type)> =
+            vec![("IN".into(), ParamDir::Input, Type::Elementary(f.input))];
+        params.extend(
+            f.outputs
+                .iter()
+                .map(|o| (o.to_string(), ParamDir::Output, Type::Error)),
+        );
+        let mut given_in = false;
+        for (k, fa) in fargs.iter().enumerate() {
+            let part = f.outputs.iter().find(|o| fa.name.is(o));
+            let (Some(part), ArgDir::Output { negated }) = (part, fa.dir) else {
+                given_in |= fa.name.is("IN");
+                self.formal_arg(k, fa, f.name, &params, rec);
+                continue;
+            };
+            let target = self.write_place(&fa.value, "=>");
+            let (_, lo, hi) = stdlib::SPLIT_PARTS
+                .iter()
+                .find(|p| p.0 == *part)
+                .copied()
+                .unwrap_or(("", 0, 0));
+            let fits = match &target {
+                Type::Elementary(e) => e
+                    .int_range()
+                    .is_some_and(|(l, h)| e.is_integer() && l <= lo && hi <= h),
+                t => t.is_error(),
+            };
+            if negated || !fits {
+                let to = self.a.type_name(&target);
+                let why = if negated {
+                    format!("NOT {part}: {part} of {} is not BOOL", f.name)
+                } else {
+                    format!(
+                        "output {part} of {} ({lo}..{hi}) cannot be stored into {to}",
+                        f.name
+                    )
+                };
+                self.a
+                    .error(code::E1012, fa.value.span(), why)
+                    .label(format!("this is {to}"))
+                    .hint("receive each part in an integer variable (ANY_INT) that holds its range: INT, UINT or wider for YEAR and MILLISECOND, any for the others");
+                continue;
+            }
+            rec.args.push((
+                ArgBinding {
+                    param: part.to_string(),
+                    output: true,
+                    ty: Type::Error,
+                    source: ArgSource::Written(k),
+                },
+                Ty::Known(target),
+            ));
+        }
+        if !given_in {
+            self.a
+                .error(
+                    code::E1062,
+                    span,
+                    format!("{} without its input IN", f.name),
+                )
+                .label("no IN := value")
+                .hint(format!("write {}(IN := value, ...)", f.name));
         }
     }
 
@@ -1070,6 +1178,7 @@ impl Body<'_, '_> {
             let is_fn =
                 stdlib::conversion(&n.name).is_some()
                     || stdlib::function(&n.name).is_some()
+                    || stdlib::split(&n.name).is_some()
                     || self.a.pou_names.get(&n.key()).is_some_and(|id| {
                         self.a.model.pous[id.0 as usize].kind == PouKind::Function
                     });
@@ -1344,9 +1453,15 @@ impl Body<'_, '_> {
                     if b.a.passing_any_address {
                         return any_address_refused(b, s, &pn, &cn, from);
                     }
+                    let hint = match ltime_timer(&cn) {
+                        Some(l) if pn == "PT" && from == "LTIME" => format!(
+                            "declare the instance {l} (edition 3's timer on LTIME), or convert explicitly with LTIME_TO_TIME"
+                        ),
+                        _ => conversion_hint(from, to),
+                    };
                     b.a.error(code::E1012, s, format!("{pn} of {cn} is {to}, not {from}"))
                         .label(format!("this is {from}"))
-                        .hint(conversion_hint(from, to));
+                        .hint(hint);
                 });
                 self.a.passing_any_address = false;
                 rec.args.push((
@@ -1667,4 +1782,16 @@ fn holding_both(a: &Type, b: &Type) -> Option<Elementary> {
                 && super::typing::widens(b, c)
         })
         .min_by_key(|c| (c.bit_width(), c.is_real()))
+}
+
+/// The LTIME timer of edition 3 (Table 46) in the family of the TIME timer `callee` (`TON` ->
+/// `TON_LTIME`), for the hint of an LTIME given to its PT.
+fn ltime_timer(callee: &str) -> Option<&'static str> {
+    let fb = super::StdFb::from_name(callee)?;
+    match fb.timer()? {
+        (super::StdFb::Ton, false) => Some("TON_LTIME"),
+        (super::StdFb::Tof, false) => Some("TOF_LTIME"),
+        (super::StdFb::Tp, false) => Some("TP_LTIME"),
+        _ => None,
+    }
 }

@@ -95,6 +95,7 @@ impl Analyzer<'_> {
                         }
                         if matches!(p.kind, crate::ast::PouKind::FunctionBlock)
                             && StdFb::from_name(&p.name.name).is_some()
+                            && !StdFb::is_vendor_name(&p.name.name)
                         {
                             // CODESYS and TwinCAT let a project's block hide the library's; IEC
                             // 61131-3 reserves the standard blocks' names: said, not silent
@@ -1819,7 +1820,7 @@ pub fn reserved_name(name: &str) -> Option<&'static str> {
     {
         // (edition 3's LDATE, LTOD, LDT are not reserved: edition-2 projects name variables so)
         Some("an elementary data type")
-    } else if StdFb::from_name(name).is_some() {
+    } else if StdFb::from_name(name).is_some() && !StdFb::is_vendor_name(name) {
         Some("a standard function block")
     } else {
         None

@@ -294,11 +294,17 @@ pub enum StdFb {
     CtudUdint,
     /// `CTUD_ULINT`: CTUD with PV and CV of type ULINT (count up on CU and down on CD).
     CtudUlint,
+    /// `TON_LTIME` (edition 3 Table 46; CODESYS's and TwinCAT's `LTON`): TON with PT and ET of type LTIME.
+    TonLtime,
+    /// `TOF_LTIME` (edition 3 Table 46; CODESYS's and TwinCAT's `LTOF`): TOF with PT and ET of type LTIME.
+    TofLtime,
+    /// `TP_LTIME` (edition 3 Table 46; CODESYS's and TwinCAT's `LTP`): TP with PT and ET of type LTIME.
+    TpLtime,
 }
 
 impl StdFb {
     /// Every standard function block, in declaration order.
-    pub const ALL: [StdFb; 22] = [
+    pub const ALL: [StdFb; 25] = [
         StdFb::RTrig,
         StdFb::FTrig,
         StdFb::Sr,
@@ -321,6 +327,9 @@ impl StdFb {
         StdFb::CtudLint,
         StdFb::CtudUdint,
         StdFb::CtudUlint,
+        StdFb::TonLtime,
+        StdFb::TofLtime,
+        StdFb::TpLtime,
     ];
     /// The IEC name, upper case (`R_TRIG`, `CTU_DINT`; the INT counters are `CTU`, `CTD`, `CTUD`).
     pub fn name(self) -> &'static str {
@@ -347,6 +356,9 @@ impl StdFb {
             StdFb::CtudLint => "CTUD_LINT",
             StdFb::CtudUdint => "CTUD_UDINT",
             StdFb::CtudUlint => "CTUD_ULINT",
+            StdFb::TonLtime => "TON_LTIME",
+            StdFb::TofLtime => "TOF_LTIME",
+            StdFb::TpLtime => "TP_LTIME",
         }
     }
     /// For a counter, its kind (up, down, up/down) and the type of PV and CV.
@@ -372,14 +384,46 @@ impl StdFb {
             _ => return None,
         })
     }
-    /// Case-insensitive lookup; `CTU_INT` etc. map to the INT counters.
+    /// For a timer, its family (`TON`, `TOF`, `TP`) and whether PT and ET are LTIME.
+    pub fn timer(self) -> Option<(StdFb, bool)> {
+        Some(match self {
+            StdFb::Ton | StdFb::Tof | StdFb::Tp => (self, false),
+            StdFb::TonLtime => (StdFb::Ton, true),
+            StdFb::TofLtime => (StdFb::Tof, true),
+            StdFb::TpLtime => (StdFb::Tp, true),
+            _ => return None,
+        })
+    }
+    /// The other names of standard FBs: edition 3's `CTU_INT`, `CTD_INT`, `CTUD_INT` (the INT
+    /// counters) and `TON_TIME`, `TOF_TIME`, `TP_TIME` (the TIME timers), and the names CODESYS's
+    /// Standard64 and TwinCAT's Tc2_Standard give the LTIME timers, `LTON`, `LTOF`, `LTP`
+    /// ([`StdFb::is_vendor_name`]).
+    const ALIASES: [(&'static str, StdFb); 9] = [
+        ("CTU_INT", StdFb::Ctu),
+        ("CTD_INT", StdFb::Ctd),
+        ("CTUD_INT", StdFb::Ctud),
+        ("TON_TIME", StdFb::Ton),
+        ("TOF_TIME", StdFb::Tof),
+        ("TP_TIME", StdFb::Tp),
+        ("LTON", StdFb::TonLtime),
+        ("LTOF", StdFb::TofLtime),
+        ("LTP", StdFb::TpLtime),
+    ];
+    /// `LTON`, `LTOF`, `LTP`: names of standard FBs that are a vendor library's, not IEC 61131-3's;
+    /// they stay free for variables (`ltp : REAL`) and a project's own block of such a name is no
+    /// W1446.
+    pub fn is_vendor_name(name: &str) -> bool {
+        ["LTON", "LTOF", "LTP"]
+            .iter()
+            .any(|n| n.eq_ignore_ascii_case(name))
+    }
+    /// Case-insensitive lookup; `CTU_INT` etc. map to the INT counters, `TON_TIME` etc. to the TIME
+    /// timers, `LTON` etc. to the LTIME timers.
     pub fn from_name(name: &str) -> Option<StdFb> {
-        let alias = [
-            ("CTU_INT", StdFb::Ctu),
-            ("CTD_INT", StdFb::Ctd),
-            ("CTUD_INT", StdFb::Ctud),
-        ];
-        if let Some(&(_, f)) = alias.iter().find(|(a, _)| a.eq_ignore_ascii_case(name)) {
+        if let Some(&(_, f)) = Self::ALIASES
+            .iter()
+            .find(|(a, _)| a.eq_ignore_ascii_case(name))
+        {
             return Some(f);
         }
         StdFb::ALL

@@ -26,6 +26,8 @@ pub enum Class {
     AnyBit,
     /// STRING and WSTRING (LEN, LEFT, CONCAT ...).
     AnyString,
+    /// ANY_INT, ANY_BIT and ANY_REAL: the types of edition 3's endianness conversions.
+    AnyNumBit,
 }
 
 impl Class {
@@ -39,6 +41,7 @@ impl Class {
             Class::AnyInt => "ANY_INT",
             Class::AnyBit => "ANY_BIT",
             Class::AnyString => "ANY_STRING",
+            Class::AnyNumBit => "ANY_INT, ANY_BIT or ANY_REAL",
         }
     }
     /// Whether `ty` belongs to the class (`Type::Error` belongs to every class).
@@ -57,6 +60,7 @@ impl Class {
             Class::AnyInt => ty.is_integer(),
             Class::AnyBit => ty.is_bit(),
             Class::AnyString => ty.is_string(),
+            Class::AnyNumBit => ty.is_numeric() || ty.is_bit(),
         }
     }
     /// Whether an untyped integer literal may take a type of this class (it can be any ANY_NUM or ANY_BIT).
@@ -319,8 +323,105 @@ pub static FUNCTIONS: &[StdFunction] = &[
         Ret::Fixed(E::Dt),
         "the DT of CONCAT_DATE and CONCAT_TOD's parts",
     ),
+    f(
+        "CONCAT_LTOD",
+        &[p("HOUR", Own(AnyInt)), p("MINUTE", Own(AnyInt)), p("SECOND", Own(AnyInt)), p("MILLISECOND", Own(AnyInt))],
+        false,
+        Ret::Fixed(E::Ltod),
+        "the LTOD of an hour (0..23), minute, second (0..59) and millisecond (0..999)",
+    ),
+    f(
+        "CONCAT_LDT",
+        &[
+            p("YEAR", Own(AnyInt)),
+            p("MONTH", Own(AnyInt)),
+            p("DAY", Own(AnyInt)),
+            p("HOUR", Own(AnyInt)),
+            p("MINUTE", Own(AnyInt)),
+            p("SECOND", Own(AnyInt)),
+            p("MILLISECOND", Own(AnyInt)),
+        ],
+        false,
+        Ret::Fixed(E::Ldt),
+        "the LDT of CONCAT_DATE and CONCAT_LTOD's parts",
+    ),
     f("DAY_OF_WEEK", &[p("IN", Fixed(E::Date))], false, Ret::Fixed(E::Int), "the day of the week of a DATE: 0 Sunday ... 6 Saturday"),
+    // edition 3: endianness conversions (on any host: the bytes in memory, not the value, are ordered)
+    f("TO_BIG_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes in memory are IN's, most significant first"),
+    f("TO_LITTLE_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes in memory are IN's, least significant first"),
+    f("FROM_BIG_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes, most significant first, are IN's in memory"),
+    f("FROM_LITTLE_ENDIAN", &[p("IN", T(AnyNumBit))], false, Ret::T, "the value whose bytes, least significant first, are IN's in memory"),
 ];
+
+/// One of edition 3's functions with outputs, `SPLIT_DATE`, `SPLIT_TOD`, `SPLIT_LTOD`, `SPLIT_DT`,
+/// `SPLIT_LDT` (Table 36): the input `IN` and the parts it splits into, each an ANY_INT output.
+#[derive(Debug, Clone, Copy)]
+pub struct Split {
+    /// The function's name, upper case.
+    pub name: &'static str,
+    /// The type of `IN`.
+    pub input: Elementary,
+    /// The outputs in order (a subset of [`SPLIT_PARTS`]).
+    pub outputs: &'static [&'static str],
+}
+
+/// Every part a SPLIT function gives, in the order of `ladderc_split`'s array, with its range
+/// (DATE and DT span 1677-09-22 .. 2262-04-11 here, int64 nanoseconds).
+pub const SPLIT_PARTS: [(&str, i128, i128); 7] = [
+    ("YEAR", 1677, 2262),
+    ("MONTH", 1, 12),
+    ("DAY", 1, 31),
+    ("HOUR", 0, 23),
+    ("MINUTE", 0, 59),
+    ("SECOND", 0, 59),
+    ("MILLISECOND", 0, 999),
+];
+
+const DATE_PARTS: &[&str] = &["YEAR", "MONTH", "DAY"];
+const TOD_PARTS: &[&str] = &["HOUR", "MINUTE", "SECOND", "MILLISECOND"];
+const DT_PARTS: &[&str] = &[
+    "YEAR",
+    "MONTH",
+    "DAY",
+    "HOUR",
+    "MINUTE",
+    "SECOND",
+    "MILLISECOND",
+];
+
+/// Edition 3's SPLIT functions (Table 36; the 4diac FORTE and trust-platform signatures).
+pub const SPLITS: [Split; 5] = [
+    Split {
+        name: "SPLIT_DATE",
+        input: E::Date,
+        outputs: DATE_PARTS,
+    },
+    Split {
+        name: "SPLIT_TOD",
+        input: E::Tod,
+        outputs: TOD_PARTS,
+    },
+    Split {
+        name: "SPLIT_LTOD",
+        input: E::Ltod,
+        outputs: TOD_PARTS,
+    },
+    Split {
+        name: "SPLIT_DT",
+        input: E::Dt,
+        outputs: DT_PARTS,
+    },
+    Split {
+        name: "SPLIT_LDT",
+        input: E::Ldt,
+        outputs: DT_PARTS,
+    },
+];
+
+/// A SPLIT function by name, case-insensitively.
+pub fn split(name: &str) -> Option<&'static Split> {
+    SPLITS.iter().find(|f| f.name.eq_ignore_ascii_case(name))
+}
 
 /// Whether the standard function `name` (upper case, as [`StdFunction::name`]) is one edition 3 added
 /// to edition 2's (Table 37's `CONCAT_DATE`, `CONCAT_TOD`, `CONCAT_DT`, `DAY_OF_WEEK`): libraries
@@ -329,7 +430,16 @@ pub static FUNCTIONS: &[StdFunction] = &[
 pub fn edition3_only(name: &str) -> bool {
     matches!(
         name,
-        "CONCAT_DATE" | "CONCAT_TOD" | "CONCAT_DT" | "DAY_OF_WEEK"
+        "CONCAT_DATE"
+            | "CONCAT_TOD"
+            | "CONCAT_DT"
+            | "CONCAT_LTOD"
+            | "CONCAT_LDT"
+            | "DAY_OF_WEEK"
+            | "TO_BIG_ENDIAN"
+            | "TO_LITTLE_ENDIAN"
+            | "FROM_BIG_ENDIAN"
+            | "FROM_LITTLE_ENDIAN"
     )
 }
 
@@ -672,6 +782,12 @@ const TIMER: &[FbParam] = &[
     o("Q", E::Bool),
     o("ET", E::Time),
 ];
+const LTIMER: &[FbParam] = &[
+    i("IN", E::Bool),
+    i("PT", E::Ltime),
+    o("Q", E::Bool),
+    o("ET", E::Ltime),
+];
 const fn ctu(t: Elementary) -> [FbParam; 5] {
     [
         i("CU", E::Bool),
@@ -713,6 +829,7 @@ pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
         StdFb::Sr => SR,
         StdFb::Rs => RS,
         StdFb::Ton | StdFb::Tof | StdFb::Tp => TIMER,
+        StdFb::TonLtime | StdFb::TofLtime | StdFb::TpLtime => LTIMER,
         StdFb::Ctu => CTU,
         StdFb::Ctd => CTD,
         StdFb::Ctud => CTUD,
@@ -787,6 +904,9 @@ pub fn fb_doc(fb: StdFb) -> &'static str {
         StdFb::Ton => "on-delay timer: Q goes TRUE when IN has been TRUE for PT",
         StdFb::Tof => "off-delay timer: Q stays TRUE for PT after IN goes FALSE",
         StdFb::Tp => "pulse timer: Q is TRUE for PT from a rising edge of IN",
+        StdFb::TonLtime => "on-delay timer on LTIME: Q goes TRUE when IN has been TRUE for PT",
+        StdFb::TofLtime => "off-delay timer on LTIME: Q stays TRUE for PT after IN goes FALSE",
+        StdFb::TpLtime => "pulse timer on LTIME: Q is TRUE for PT from a rising edge of IN",
         StdFb::Ctu | StdFb::CtuDint | StdFb::CtuLint | StdFb::CtuUdint | StdFb::CtuUlint => {
             "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets"
         }
