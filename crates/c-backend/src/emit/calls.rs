@@ -821,6 +821,27 @@ impl Gen<'_> {
                     text
                 });
             }
+            // edition 3: a character to the one-character string; WCHAR to WSTRING keeps its
+            // code (not through STRING)
+            (Some(f @ (E::Char | E::Wchar)), None) if to.is_string() && !to.is_error() => {
+                let wide_to = matches!(to, Type::String { wide: true, .. });
+                return Some(match (f, wide_to) {
+                    (E::Char, false) => cfmt!("ladderc_char_to_str({v})"),
+                    (E::Char, true) => cfmt!("ladderc_wchar_to_wstr((IEC_WCHAR)({v}))"),
+                    (_, false) => cfmt!("ladderc_char_to_str(ladderc_wchar_to_char({v}))"),
+                    (_, true) => cfmt!("ladderc_wchar_to_wstr({v})"),
+                });
+            }
+            // edition 3: a string to its first character (NUL of an empty string)
+            (None, Some(t @ (E::Char | E::Wchar))) if from.is_string() && !from.is_error() => {
+                let wide_from = matches!(from, Type::String { wide: true, .. });
+                return Some(match (wide_from, t) {
+                    (false, E::Char) => cfmt!("ladderc_str_first({v})"),
+                    (false, _) => cfmt!("((IEC_WCHAR)ladderc_str_first({v}))"),
+                    (true, E::Char) => cfmt!("ladderc_wchar_to_char(ladderc_wstr_first({v}))"),
+                    (true, _) => cfmt!("ladderc_wstr_first({v})"),
+                });
+            }
             (Some(f), None) if to.is_string() && !to.is_error() => {
                 let ct = ctypes::elementary(f);
                 let text = cfmt!("ladderc_str_of({}, &({ct}){{{v}}})", ctypes::type_tag(f));

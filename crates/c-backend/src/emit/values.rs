@@ -103,6 +103,10 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     }
     let ct = ctypes::elementary(t);
     let time_like = |e: Elementary| e.is_duration() || e.is_date();
+    if (f, t) == (E::Wchar, E::Char) {
+        // a code a CHAR cannot hold: '?' (as WSTRING_TO_STRING), and the range flag
+        return cfmt!("ladderc_wchar_to_char({x})");
+    }
     if t == E::Bool {
         return cfmt!("((IEC_BOOL)(({x}) != 0))");
     }

@@ -514,8 +514,18 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
                 || (f.is_date() && plain(t))
                 || (t.is_date() && plain(f))
                 || (f == t)
+                // edition 3's characters (Table 22 and CODESYS's): with each other, with the
+                // integers and the bit strings but BOOL (their code)
+                || (f.is_char() && (t.is_char() || code_of_char(t)))
+                || (t.is_char() && code_of_char(f))
         }
     }
+}
+
+/// The types a CHAR or WCHAR converts to and from as its code: the integers, and the bit strings
+/// but BOOL.
+fn code_of_char(e: E) -> bool {
+    e.is_integer() || (e.is_bit() && e != E::Bool)
 }
 
 /// `TO_STRING`, `TO_WSTRING` and `TO_<integer or bit string>` of an enumerated value, as CODESYS and
