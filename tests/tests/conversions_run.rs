@@ -132,10 +132,15 @@ fn inputs(ty: &str) -> Vec<(String, V)> {
             ("LDT#1969-12-31-23:00:00".into(), V::T(-3_600_000_000_000)),
         ],
         // edition 3's characters (their code); a NUL is the empty string's STRING_TO_CHAR
-        "CHAR" => [("CHAR#'A'", 65), ("CHAR#'$FF'", 255), ("CHAR#'$''", 39), ("','", 44)]
-            .iter()
-            .map(|(l, c)| (l.to_string(), V::C(*c)))
-            .collect(),
+        "CHAR" => [
+            ("CHAR#'A'", 65),
+            ("CHAR#'$FF'", 255),
+            ("CHAR#'$''", 39),
+            ("','", 44),
+        ]
+        .iter()
+        .map(|(l, c)| (l.to_string(), V::C(*c)))
+        .collect(),
         "WCHAR" => [
             ("WCHAR#\"A\"", 65),
             ("WCHAR#\"$20AC\"", 0x20AC),

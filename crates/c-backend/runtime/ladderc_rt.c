@@ -291,7 +291,7 @@ int ladderc_wstring_cmp(const IEC_WSTRING *a, const IEC_WSTRING *b) {
 static const char *const type_names[] = {
     "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD",
     "DWORD", "LWORD", "REAL", "LREAL", "TIME", "LTIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME", "STRING",
-    "WSTRING"};
+    "WSTRING", "LDATE", "LTIME_OF_DAY", "LDATE_AND_TIME", "CHAR", "WCHAR"};
 
 const char *ladderc_type_name(ladderc_type t) {
     return (unsigned)t < sizeof type_names / sizeof type_names[0] ? type_names[t] : "?";

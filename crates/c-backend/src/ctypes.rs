@@ -243,7 +243,16 @@ pub fn int_literal(e: Elementary, v: i128) -> String {
         E::Bool => (if v != 0 { "1" } else { "0" }).to_string(),
         E::Real => cfmt!("((IEC_REAL){v}.0)"),
         E::Lreal => cfmt!("((IEC_LREAL){v}.0)"),
-        E::Usint | E::Uint | E::Udint | E::Ulint | E::Byte | E::Word | E::Dword | E::Lword | E::Char | E::Wchar => {
+        E::Usint
+        | E::Uint
+        | E::Udint
+        | E::Ulint
+        | E::Byte
+        | E::Word
+        | E::Dword
+        | E::Lword
+        | E::Char
+        | E::Wchar => {
             let bits = e.bit_width();
             let masked = (v as u128)
                 & if bits >= 64 {

@@ -479,7 +479,11 @@ impl Gen<'_> {
                     let wide = matches!(ty, Type::String { wide: true, .. });
                     let site = self.index_site(scope, r, at);
                     let i = self.value(scope, &idx[0], &Type::Elementary(E::Lint))?;
-                    let f = if wide { "ladderc_wchar_at" } else { "ladderc_char_at" };
+                    let f = if wide {
+                        "ladderc_wchar_at"
+                    } else {
+                        "ladderc_char_at"
+                    };
                     Place::Mem {
                         lv: cfmt!("(*{f}(&({lv}), {i}, {site}))"),
                         ty: Type::Elementary(if wide { E::Wchar } else { E::Char }),

@@ -1504,7 +1504,14 @@ impl Analyzer<'_> {
                     // `'A'`: a STRING, or (edition 3) a CHAR; `"A"` a WSTRING or a WCHAR
                     LitType::Char(wide) => match ty {
                         Type::String { wide: w, .. } => w == wide,
-                        t => t.elementary() == Some(if *wide { Elementary::Wchar } else { Elementary::Char }),
+                        t => {
+                            t.elementary()
+                                == Some(if *wide {
+                                    Elementary::Wchar
+                                } else {
+                                    Elementary::Char
+                                })
+                        }
                     },
                 };
                 if !ok {

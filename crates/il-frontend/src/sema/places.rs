@@ -483,7 +483,11 @@ impl Body<'_, '_> {
                     };
                     self.constant_index_in_bounds(&ixs[0], &d, v, at);
                     place = Place {
-                        ty: Type::Elementary(if wide { Elementary::Wchar } else { Elementary::Char }),
+                        ty: Type::Elementary(if wide {
+                            Elementary::Wchar
+                        } else {
+                            Elementary::Char
+                        }),
                         read_only: place.read_only,
                     };
                 }
