@@ -16,7 +16,9 @@
 //!   outside the declared length E1050;
 //! - `CONCAT` with CHAR and WCHAR inputs (edition 3's ANY_CHARS) (before: E1006);
 //! - driven by stimuli in the literal form (before: E1003);
-//! - bad literals and mixed types rejected with one located diagnostic each.
+//! - bad literals and mixed types rejected with one located diagnostic each;
+//! - and edition 3's `IS_VALID` (a REAL or LREAL neither NaN nor infinite) and `IS_VALID_BCD`
+//!   (a bit string of 4-bit digits 0..9) (before: E1019 unknown function).
 
 mod common;
 use common::{check_text, run_stimulated, run_text};
@@ -392,4 +394,70 @@ END_PROGRAM
 ",
     );
     assert_eq!((code, lines), (Some(0), vec![]));
+}
+
+/// Edition 3's `IS_VALID`: TRUE for a REAL or LREAL that is a number, FALSE for NaN and the
+/// infinities (an integer widens to a real, as SQRT's input, and is valid); `IS_VALID_BCD`: TRUE
+/// when every 4-bit digit of the bit string is 0..9. A TIME is no input of either (E1004).
+#[test]
+fn is_valid_and_is_valid_bcd() {
+    let src = "PROGRAM Main
+VAR
+  big : LREAL := 1.0E300;
+  r : REAL := 2.5;
+  inf, nan : LREAL;
+  real_ok, inf_ok, nan_ok, neg_inf_ok, lreal_ok, bcd_word, bcd_byte, bcd_dword, bcd_zero : BOOL;
+END_VAR
+inf := big * big;
+nan := inf - inf;
+real_ok := IS_VALID(r);
+inf_ok := IS_VALID(inf);
+nan_ok := IS_VALID(nan);
+neg_inf_ok := IS_VALID(-inf);
+lreal_ok := IS_VALID(big);
+bcd_word := IS_VALID_BCD(WORD#16#1234);
+bcd_byte := IS_VALID_BCD(BYTE#16#1A);
+bcd_dword := IS_VALID_BCD(DWORD#16#9990_00F0);
+bcd_zero := IS_VALID_BCD(LWORD#0);
+END_PROGRAM
+";
+    check_scan(
+        "valid.st",
+        src,
+        &[
+            ("real_ok", "1"),
+            ("inf_ok", "0"),
+            ("nan_ok", "0"),
+            ("neg_inf_ok", "0"),
+            ("lreal_ok", "1"),
+            ("bcd_word", "1"),
+            ("bcd_byte", "0"),
+            ("bcd_dword", "0"),
+            ("bcd_zero", "1"),
+        ],
+    );
+    let (code, lines) = check_text(
+        "valid_time.st",
+        "PROGRAM Main
+VAR
+  t : TIME;
+  ok : BOOL;
+END_VAR
+ok := IS_VALID(t);
+ok := IS_VALID_BCD(t);
+END_PROGRAM
+",
+    );
+    assert_eq!(code, Some(1));
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split(" (hint").next().unwrap())
+        .collect();
+    assert_eq!(
+        heads,
+        [
+            "valid_time.st:6:7: error[E1004]: IS_VALID is not defined for TIME",
+            "valid_time.st:7:7: error[E1004]: IS_VALID_BCD is not defined for TIME",
+        ]
+    );
 }

@@ -287,6 +287,14 @@ static inline IEC_TOD ladderc_dt_to_tod(IEC_DT dt) {
 static inline IEC_DATE ladderc_dt_to_date(IEC_DT dt) { return ladderc_sub_IEC_LINT(dt, ladderc_dt_to_tod(dt)); }
 
 /* BCD: invalid digits (> 9) give 0 and LADDERC_ERR_RANGE. */
+/* Edition 3's IS_VALID_BCD: every 4-bit digit 0..9. */
+static inline IEC_BOOL ladderc_is_valid_bcd(uint64_t bcd) {
+    while (bcd) {
+        if ((bcd & 0xFu) > 9) return 0;
+        bcd >>= 4;
+    }
+    return 1;
+}
 static inline uint64_t ladderc_bcd_to_uint(uint64_t bcd) {
     uint64_t v = 0, mul = 1;
     while (bcd) {

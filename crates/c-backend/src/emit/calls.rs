@@ -714,6 +714,9 @@ impl Gen<'_> {
                     _ => v.clone(),
                 })
             }
+            // edition 3
+            "IS_VALID" => Some(cfmt!("((IEC_BOOL)(isfinite({}) != 0))", vals.first()?)),
+            "IS_VALID_BCD" => Some(cfmt!("ladderc_is_valid_bcd((uint64_t)({}))", vals.first()?)),
             "SQRT" | "LN" | "LOG" | "EXP" | "SIN" | "COS" | "TAN" | "ASIN" | "ACOS" | "ATAN" => {
                 let e = e?;
                 let f = match name {

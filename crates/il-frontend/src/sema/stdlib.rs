@@ -200,6 +200,10 @@ pub static FUNCTIONS: &[StdFunction] = &[
     // numeric functions
     f("ABS", NUM1, false, Ret::T, "absolute value"),
     f("SQRT", REAL1, false, Ret::T, "square root"),
+    // edition 3: whether a real is a number (neither NaN nor an infinity), whether a bit string
+    // holds BCD (every nibble 0..9)
+    f("IS_VALID", REAL1, false, Ret::Fixed(E::Bool), "TRUE unless IN is NaN or an infinity"),
+    f("IS_VALID_BCD", &[p("IN", T(AnyBit))], false, Ret::Fixed(E::Bool), "TRUE when every 4-bit digit of IN is 0..9"),
     f("LN", REAL1, false, Ret::T, "natural logarithm"),
     f("LOG", REAL1, false, Ret::T, "logarithm base 10"),
     f("EXP", REAL1, false, Ret::T, "natural exponential"),
