@@ -376,7 +376,7 @@ END_PROGRAM
             "bad.st:7:6: error[E1017]: a CHAR literal holds exactly one character, `AB` has 2",
             "bad.st:8:1: error[E1006]: cannot store STRING[2] into CHAR",
             "bad.st:9:6: error[E1004]: ADD is not defined for CHAR",
-            "bad.st:10:8: error[E1050]: index 5 is outside the bounds 1..4 of `s`",
+            "bad.st:10:8: error[E1050]: character 5 is outside the declared length 1..4 of `s`",
             "bad.st:11:1: error[E1006]: cannot store CHAR into INT",
             "bad.st:12:6: error[E1021]: `s` is a string: one index gives a character, 2 are given",
         ],

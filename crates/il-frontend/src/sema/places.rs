@@ -481,7 +481,7 @@ impl Body<'_, '_> {
                         lower: 1,
                         upper: i128::from(len.max(1)),
                     };
-                    self.constant_index_in_bounds(&ixs[0], &d, v, at);
+                    self.constant_char_index_in_bounds(&ixs[0], &d, v, at);
                     place = Place {
                         ty: Type::Elementary(if wide {
                             Elementary::Wchar
@@ -565,6 +565,32 @@ impl Body<'_, '_> {
             .hint(format!(
                 "index with a value from {} to {}, or declare the array with bounds that hold {k}",
                 d.lower, d.upper
+            ));
+    }
+
+    /// E1050 when the index of a string's character `s[i]` is an integer literal outside 1..the
+    /// declared length (a computed one is checked against LEN(s) at run time).
+    fn constant_char_index_in_bounds(&mut self, ix: &Operand, d: &Dim, v: &VarRef, at: usize) {
+        let Operand::Literal(l) = ix else { return };
+        let ast::LiteralKind::Int(k) = l.kind else {
+            return;
+        };
+        if (d.lower..=d.upper).contains(&k) {
+            return;
+        }
+        let path = path_text(v, at);
+        self.a
+            .error(
+                code::E1050,
+                l.span,
+                format!(
+                    "character {k} is outside the declared length 1..{} of `{path}`",
+                    d.upper
+                ),
+            )
+            .label("outside the string")
+            .hint(format!(
+                "s[i] is the i-th character, from 1 to the string's length; declare `{path}` longer to hold {k} characters"
             ));
     }
 
