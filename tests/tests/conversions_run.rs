@@ -25,6 +25,8 @@ enum V {
     R(f64),
     T(i128),
     S(&'static str),
+    /// A CHAR or WCHAR (edition 3): its code.
+    C(i128),
 }
 
 /// The inputs of one source type: the IL literal (or None: computed in the body) and its value.
@@ -129,6 +131,25 @@ fn inputs(ty: &str) -> Vec<(String, V)> {
             ),
             ("LDT#1969-12-31-23:00:00".into(), V::T(-3_600_000_000_000)),
         ],
+        // edition 3's characters (their code); a NUL is the empty string's STRING_TO_CHAR
+        "CHAR" => [
+            ("CHAR#'A'", 65),
+            ("CHAR#'$FF'", 255),
+            ("CHAR#'$''", 39),
+            ("','", 44),
+        ]
+        .iter()
+        .map(|(l, c)| (l.to_string(), V::C(*c)))
+        .collect(),
+        "WCHAR" => [
+            ("WCHAR#\"A\"", 65),
+            ("WCHAR#\"$20AC\"", 0x20AC),
+            ("WCHAR#\"$00E9\"", 0xE9),
+            ("\"$\"\"", 34),
+        ]
+        .iter()
+        .map(|(l, c)| (l.to_string(), V::C(*c)))
+        .collect(),
         "STRING" => [
             "42",
             " -7 ",
@@ -299,7 +320,30 @@ fn civil(z: i64) -> (i64, u32, u32) {
     (yoe + era * 400 + (m <= 2) as i64, m, d)
 }
 
+/// A CHAR's or WCHAR's trace value (the runtime's `ladderc_format_value`): `CHAR#'A'`,
+/// `WCHAR#"A"`, `$'` (`$"`) and `$$` escaped, a control character (and a WCHAR's surrogate) as
+/// `$hh` (`$hhhh`).
+fn char_text(t: &str, code: i128) -> String {
+    let wide = t == "WCHAR";
+    let q = if wide { '"' } else { '\'' };
+    let c = code as u32;
+    let body = match char::from_u32(c) {
+        Some(ch) if ch == '$' || ch == q => format!("${ch}"),
+        Some(ch) if !(c < 0x20 || (0x7F..0xA0).contains(&c)) => ch.to_string(),
+        _ if wide => format!("${c:04X}"),
+        _ => format!("${c:02X}"),
+    };
+    format!("{t}#{q}{body}{q}")
+}
+fn is_char(t: &str) -> bool {
+    matches!(t, "CHAR" | "WCHAR")
+}
+
 fn string_to(s: &str, t: &str) -> Want {
+    if is_char(t) {
+        // edition 3: the first character (NUL of an empty string)
+        return Want::Text(char_text(t, s.chars().next().map_or(0, |c| c as i128)));
+    }
     let s = s.trim();
     let int = s.parse::<i128>().ok();
     match t {
@@ -341,6 +385,11 @@ fn to_string_of(from: &str, x: &V) -> Want {
         V::T(ns) if is_time(from) => duration_text(*ns),
         V::T(ns) => date_text(from, *ns),
         V::S(s) => s.to_string(),
+        // the one-character string; a WCHAR beyond U+00FF a `?` (as WSTRING_TO_STRING)
+        V::C(c) => char::from_u32(*c as u32)
+            .filter(|_| *c <= 0xFF)
+            .unwrap_or('?')
+            .to_string(),
     })
 }
 
@@ -377,6 +426,12 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
     }
     match x {
         V::S(s) => string_to(s, to),
+        // WCHAR_TO_CHAR: a code beyond U+00FF is `?`; to a number, the code
+        V::C(c) if to == "CHAR" && *c > 0xFF => Want::Text(char_text(to, '?' as i128)),
+        V::C(c) if is_char(to) => Want::Text(char_text(to, *c)),
+        V::C(c) => Want::Text(wrap(*c, to).to_string()),
+        // a number to a character: its code, wrapped as to BYTE (WORD)
+        V::I(v) if is_char(to) => Want::Text(char_text(to, wrap(*v, to))),
         V::I(v) => {
             if is_real(to) {
                 real_of(to, *v as f64)
@@ -637,6 +692,11 @@ fn every_conversion_of_the_catalogue_runs_as_iec_61131_3_says() {
                 let want = expected(name, from, to, x);
                 let ok = match &want {
                     Want::Text(w) if *to == "STRING" => got == format!("\"{w}\""),
+                    // a character's field is quoted when it holds `"` or `,` (split_csv keeps
+                    // the outer quotes)
+                    Want::Text(w) if is_char(to) && (w.contains('"') || w.contains(',')) => {
+                        got == format!("\"{w}\"")
+                    }
                     Want::Text(w) => got == w,
                     Want::Real(w) => {
                         let g = parse_real(got);

@@ -75,6 +75,9 @@ fn literals(ty: &str) -> Vec<String> {
         "LTOD" => &["LTOD#12:30:00.000000005", "LTOD#00:00:00"],
         "LDT" => &["LDT#2024-01-31-12:30:00", "LDT#1969-12-31-23:00:00"],
         "STRING" => &["'abc'", "''"],
+        // edition 3's characters (a WCHAR beyond U+00FF is `?` in a STRING: not its twin)
+        "CHAR" => &["'A'", "CHAR#'$FF'"],
+        "WCHAR" => &["\"A\"", "WCHAR#\"$00E9\""],
         other => panic!("no literals for {other}"),
     };
     l.iter().map(|s| s.to_string()).collect()

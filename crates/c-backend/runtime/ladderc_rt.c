@@ -12,6 +12,8 @@ uint32_t ladderc_errors = 0;
 const char *ladderc_null_ref_site = "";
 const char *ladderc_mem_site = "";
 const char *ladderc_pointer_site = "";
+const char *ladderc_char_index_site = "";
+int64_t ladderc_char_index_at[2];
 const char *ladderc_bounds_site = "";
 int64_t ladderc_bounds_at[3];
 IEC_TIME ladderc_now = 0;
@@ -294,7 +296,7 @@ int ladderc_wstring_cmp(const IEC_WSTRING *a, const IEC_WSTRING *b) {
 static const char *const type_names[] = {
     "BOOL", "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD",
     "DWORD", "LWORD", "REAL", "LREAL", "TIME", "LTIME", "DATE", "TIME_OF_DAY", "DATE_AND_TIME", "STRING",
-    "WSTRING"};
+    "WSTRING", "LDATE", "LTIME_OF_DAY", "LDATE_AND_TIME", "CHAR", "WCHAR"};
 
 const char *ladderc_type_name(ladderc_type t) {
     return (unsigned)t < sizeof type_names / sizeof type_names[0] ? type_names[t] : "?";
@@ -628,6 +630,55 @@ int ladderc_parse_value(ladderc_type t, const char *text, void *out, char *err, 
         memcpy(longer + ns, s, nl + 1);
         return ladderc_parse_value(st, longer, out, err, errlen);
     }
+    case LADDERC_T_CHAR:
+    case LADDERC_T_WCHAR: {
+        /* edition 3's characters: `CHAR#'A'`, `'A'`, `A`, `WCHAR#"A"`, `"A"`; inside quotes the
+         * IEC escapes `$$` `$'` `$"` `$L` `$N` `$P` `$R` `$T` and `$hh` (CHAR) / `$hhhh` (WCHAR) */
+        static const char *const pc[] = {"CHAR", NULL};
+        static const char *const pw[] = {"WCHAR", NULL};
+        int wide = t == LADDERC_T_WCHAR;
+        size_t len, count = 0;
+        uint16_t units[4];
+        uint32_t code;
+        s = skip_prefix(text, wide ? pw : pc);
+        len = strlen(s);
+        if (len >= 3 && (s[0] == '\'' || s[0] == '"') && s[len - 1] == s[0] && s[1] == '$') {
+            const char *e = s + 2;
+            size_t n = len - 3, digits = wide ? 4 : 2, i;
+            char c = (char)toupper((unsigned char)e[0]);
+            if (n == 1 && (c == '$' || c == '\'' || c == '"')) code = (unsigned char)c;
+            else if (n == 1 && (c == 'L' || c == 'N')) code = 0x0A;
+            else if (n == 1 && c == 'P') code = 0x0C;
+            else if (n == 1 && c == 'R') code = 0x0D;
+            else if (n == 1 && c == 'T') code = 0x09;
+            else if (n == digits) {
+                code = 0;
+                for (i = 0; i < n; i++) {
+                    if (!isxdigit((unsigned char)e[i]))
+                        return fail(err, errlen, "expected `$` and hexadecimal digits", text);
+                    code = code * 16 + (uint32_t)(isdigit((unsigned char)e[i]) ? e[i] - '0' : toupper((unsigned char)e[i]) - 'A' + 10);
+                }
+            } else {
+                return fail(err, errlen, wide ? "expected an escape `$$`, `$\"`, `$N` ... or `$hhhh`" : "expected an escape `$$`, `$'`, `$N` ... or `$hh`", text);
+            }
+        } else {
+            if (len >= 2 && (s[0] == '\'' || s[0] == '"') && s[len - 1] == s[0]) {
+                s++;
+                len -= 2;
+            }
+            if (utf8_to_utf16(s, len, units, 4, &count) || count != 1)
+                return fail(err, errlen, wide ? "expected one character for a WCHAR" : "expected one character for a CHAR", text);
+            code = units[0];
+        }
+        if (wide) {
+            *(IEC_WCHAR *)out = (IEC_WCHAR)code;
+        } else {
+            if (code > 0xFF)
+                return fail(err, errlen, "a CHAR holds the characters U+0000-U+00FF; use a WCHAR", text);
+            *(IEC_CHAR *)out = (IEC_CHAR)code;
+        }
+        return 0;
+    }
     case LADDERC_T_STRING: {
         /* UTF-8 text; a STRING holds each character U+0000-U+00FF as one byte (ISO 8859-1) */
         size_t len = strlen(text), count = 0, i;
@@ -729,8 +780,8 @@ int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_
 
 unsigned ladderc_type_bytes(ladderc_type t) {
     switch (t) {
-    case LADDERC_T_BOOL: case LADDERC_T_SINT: case LADDERC_T_USINT: case LADDERC_T_BYTE: return 1;
-    case LADDERC_T_INT: case LADDERC_T_UINT: case LADDERC_T_WORD: return 2;
+    case LADDERC_T_BOOL: case LADDERC_T_SINT: case LADDERC_T_USINT: case LADDERC_T_BYTE: case LADDERC_T_CHAR: return 1;
+    case LADDERC_T_INT: case LADDERC_T_UINT: case LADDERC_T_WORD: case LADDERC_T_WCHAR: return 2;
     case LADDERC_T_DINT: case LADDERC_T_UDINT: case LADDERC_T_DWORD: case LADDERC_T_REAL: return 4;
     case LADDERC_T_STRING: return sizeof(IEC_STRING);
     case LADDERC_T_WSTRING: return sizeof(IEC_WSTRING);
@@ -861,6 +912,41 @@ void ladderc_format_value(ladderc_type t, const void *value, char *buf, size_t l
         snprintf(buf, len, "%s#%s", t == LADDERC_T_TOD ? "TOD" : "LTOD", clock);
         break;
     }
+    case LADDERC_T_CHAR:
+    case LADDERC_T_WCHAR: {
+        /* edition 3's literal form, `CHAR#'A'`, `WCHAR#"A"`: `$$`, `$'` (`$"`) and `$hh` (`$hhhh`)
+         * for a control character (and a WCHAR's surrogate); the CSV field quoted (quotes doubled)
+         * when it holds a `"` or a `,` */
+        int wide = t == LADDERC_T_WCHAR;
+        uint32_t cp = wide ? *(const IEC_WCHAR *)value : *(const IEC_CHAR *)value;
+        char q = wide ? '"' : '\'';
+        char body[16], lit[32];
+        size_t o = 0, i, n;
+        if (cp == '$' || cp == (uint32_t)q) snprintf(body, sizeof body, "$%c", (char)cp);
+        else if (cp < 0x20 || (cp >= 0x7F && cp < 0xA0) || (cp >= 0xD800 && cp <= 0xDFFF))
+            snprintf(body, sizeof body, wide ? "$%04X" : "$%02X", (unsigned)cp);
+        else if (cp < 0x80) snprintf(body, sizeof body, "%c", (char)cp);
+        else if (cp < 0x800) snprintf(body, sizeof body, "%c%c", (char)(0xC0 | (cp >> 6)), (char)(0x80 | (cp & 0x3F)));
+        else
+            snprintf(body, sizeof body, "%c%c%c", (char)(0xE0 | (cp >> 12)), (char)(0x80 | ((cp >> 6) & 0x3F)),
+                     (char)(0x80 | (cp & 0x3F)));
+        snprintf(lit, sizeof lit, "%s#%c%s%c", wide ? "WCHAR" : "CHAR", q, body, q);
+        n = strlen(lit);
+        if (!len) break;
+        if (!strchr(lit, '"') && !strchr(lit, ',')) {
+            snprintf(buf, len, "%s", lit);
+            break;
+        }
+        if (len < 2 * n + 3) { buf[0] = '\0'; break; }
+        buf[o++] = '"';
+        for (i = 0; i < n; i++) {
+            if (lit[i] == '"') buf[o++] = '"';
+            buf[o++] = lit[i];
+        }
+        buf[o++] = '"';
+        buf[o] = '\0';
+        break;
+    }
     case LADDERC_T_STRING: {
         /* CSV field: always quoted, quotes doubled; each byte is its ISO 8859-1 character, in UTF-8. */
         const IEC_STRING *s = (const IEC_STRING *)value;
@@ -915,6 +1001,8 @@ IEC_STRING ladderc_str_of(int type, const void *value) {
     char buf[2 * LADDERC_STRING_CAP + 16];
     if (type == LADDERC_T_BOOL) return *(const IEC_BOOL *)value ? ladderc_str_lit("TRUE", 4) : ladderc_str_lit("FALSE", 5);
     if (type == LADDERC_T_STRING) return *(const IEC_STRING *)value;
+    if (type == LADDERC_T_CHAR) return ladderc_char_to_str(*(const IEC_CHAR *)value);
+    if (type == LADDERC_T_WCHAR) return ladderc_char_to_str(ladderc_wchar_to_char(*(const IEC_WCHAR *)value));
     ladderc_format_value((ladderc_type)type, value, buf, sizeof buf);
     return ladderc_str_lit(buf, strlen(buf));
 }

@@ -62,6 +62,8 @@ typedef int64_t IEC_DT;    /* nanoseconds since 1970-01-01T00:00:00 */
 typedef int64_t IEC_LDATE; /* edition 3: as IEC_DATE */
 typedef int64_t IEC_LTOD;  /* edition 3: as IEC_TOD */
 typedef int64_t IEC_LDT;   /* edition 3: as IEC_DT */
+typedef uint8_t IEC_CHAR;  /* edition 3: a STRING's character (ISO 8859-1 code) */
+typedef uint16_t IEC_WCHAR; /* edition 3: a WSTRING's character (UCS-2 code) */
 
 #define LADDERC_STRING_CAP 254
 typedef struct {
@@ -93,6 +95,7 @@ typedef struct {
 #define LADDERC_ERR_NULL_REF 64u /* a NULL reference dereferenced: zero read, write dropped */
 #define LADDERC_ERR_MEM 128u     /* MEMCPY/MEMMOVE/MEMSET/MEMCMP count beyond its variables: clipped */
 #define LADDERC_ERR_POINTER 256u /* a pointer moved outside its variable dereferenced: zero read, write dropped */
+#define LADDERC_ERR_CHAR_INDEX 512u /* s[i] of a STRING/WSTRING outside 1..LEN(s): NUL read, write dropped */
 
 extern uint32_t ladderc_errors;  /* sticky error flags, LADDERC_ERR_* */
 extern IEC_TIME ladderc_now;     /* the scan clock: nanoseconds since start, set before each cycle */
@@ -102,6 +105,8 @@ extern const char *ladderc_mem_site;      /* where the first memory function cou
 extern const char *ladderc_bounds_site;   /* where the first array index out of range was used */
 extern int64_t ladderc_bounds_at[3];       /* that index, and the lower and upper bounds it missed */
 extern const char *ladderc_pointer_site;  /* where the first pointer outside its variable was dereferenced */
+extern const char *ladderc_char_index_site; /* where the first character index outside its string was used */
+extern int64_t ladderc_char_index_at[2];    /* that index and the string's length then */
 
 /* The loop guard. Every jump back in the generated code (the end of a WHILE, REPEAT or FOR pass, an IL
  * jump to an earlier label) passes LADDERC_LOOP_GUARD(file, start, end) with the source span of the
@@ -282,6 +287,14 @@ static inline IEC_TOD ladderc_dt_to_tod(IEC_DT dt) {
 static inline IEC_DATE ladderc_dt_to_date(IEC_DT dt) { return ladderc_sub_IEC_LINT(dt, ladderc_dt_to_tod(dt)); }
 
 /* BCD: invalid digits (> 9) give 0 and LADDERC_ERR_RANGE. */
+/* Edition 3's IS_VALID_BCD: every 4-bit digit 0..9. */
+static inline IEC_BOOL ladderc_is_valid_bcd(uint64_t bcd) {
+    while (bcd) {
+        if ((bcd & 0xFu) > 9) return 0;
+        bcd >>= 4;
+    }
+    return 1;
+}
 static inline uint64_t ladderc_bcd_to_uint(uint64_t bcd) {
     uint64_t v = 0, mul = 1;
     while (bcd) {
@@ -360,6 +373,61 @@ static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi, const char
     }
     return (size_t)((uint64_t)i - (uint64_t)lo);
 }
+
+/* Edition 3's `s[i]` of a STRING (a CHAR) or a WSTRING (a WCHAR), 1-based: the character's place.
+ * An index outside 1..LEN(s) sets LADDERC_ERR_CHAR_INDEX (the first site and index kept) and gives a
+ * scratch character, NUL each time it is handed out: a read gives NUL, a write is dropped. */
+static inline IEC_CHAR *ladderc_char_at(IEC_STRING *s, int64_t i, const char *site) {
+    static IEC_CHAR scratch;
+    if (i < 1 || i > (int64_t)s->len) {
+        if (!(ladderc_errors & LADDERC_ERR_CHAR_INDEX)) {
+            ladderc_char_index_site = site;
+            ladderc_char_index_at[0] = i;
+            ladderc_char_index_at[1] = (int64_t)s->len;
+        }
+        ladderc_errors |= LADDERC_ERR_CHAR_INDEX;
+        scratch = 0;
+        return &scratch;
+    }
+    return (IEC_CHAR *)&s->data[i - 1];
+}
+static inline IEC_WCHAR *ladderc_wchar_at(IEC_WSTRING *s, int64_t i, const char *site) {
+    static IEC_WCHAR scratch;
+    if (i < 1 || i > (int64_t)s->len) {
+        if (!(ladderc_errors & LADDERC_ERR_CHAR_INDEX)) {
+            ladderc_char_index_site = site;
+            ladderc_char_index_at[0] = i;
+            ladderc_char_index_at[1] = (int64_t)s->len;
+        }
+        ladderc_errors |= LADDERC_ERR_CHAR_INDEX;
+        scratch = 0;
+        return &scratch;
+    }
+    return &s->data[i - 1];
+}
+/* CHAR_TO_STRING / WCHAR_TO_WSTRING: the one-character string; STRING_TO_CHAR / WSTRING_TO_WCHAR:
+ * the first character (NUL of an empty string); WCHAR_TO_CHAR keeps a code up to 255, else '?'
+ * (as WSTRING_TO_STRING does with a character a STRING cannot hold). */
+static inline IEC_STRING ladderc_char_to_str(IEC_CHAR c) {
+    IEC_STRING s;
+    s.len = 1;
+    s.data[0] = (char)c;
+    s.data[1] = '\0';
+    return s;
+}
+static inline IEC_WSTRING ladderc_wchar_to_wstr(IEC_WCHAR c) {
+    IEC_WSTRING s;
+    s.len = 1;
+    s.data[0] = c;
+    s.data[1] = 0;
+    return s;
+}
+static inline IEC_CHAR ladderc_wchar_to_char(IEC_WCHAR c) {
+    if (c > 0xFF) { ladderc_errors |= LADDERC_ERR_RANGE; return (IEC_CHAR)'?'; }
+    return (IEC_CHAR)c;
+}
+static inline IEC_CHAR ladderc_str_first(IEC_STRING s) { return s.len ? (IEC_CHAR)s.data[0] : 0; }
+static inline IEC_WCHAR ladderc_wstr_first(IEC_WSTRING s) { return s.len ? s.data[0] : 0; }
 
 /* REF(x) / ADR(x): a reference to the `size` bytes at `base` (NULL for NULL). */
 static inline IEC_REF ladderc_ref(void *base, size_t size) {
@@ -675,7 +743,7 @@ typedef enum {
     LADDERC_T_BYTE, LADDERC_T_WORD, LADDERC_T_DWORD, LADDERC_T_LWORD,
     LADDERC_T_REAL, LADDERC_T_LREAL, LADDERC_T_TIME, LADDERC_T_LTIME,
     LADDERC_T_DATE, LADDERC_T_TOD, LADDERC_T_DT, LADDERC_T_STRING, LADDERC_T_WSTRING,
-    LADDERC_T_LDATE, LADDERC_T_LTOD, LADDERC_T_LDT
+    LADDERC_T_LDATE, LADDERC_T_LTOD, LADDERC_T_LDT, LADDERC_T_CHAR, LADDERC_T_WCHAR
 } ladderc_type;
 
 /* A watchable variable: either in memory (ptr) or located in an area (area != NULL: offset, bit). */

@@ -36,6 +36,8 @@ pub fn elementary(e: Elementary) -> &'static str {
         E::Ldate => "IEC_LDATE",
         E::Ltod => "IEC_LTOD",
         E::Ldt => "IEC_LDT",
+        E::Char => "IEC_CHAR",
+        E::Wchar => "IEC_WCHAR",
     }
 }
 
@@ -65,14 +67,16 @@ pub fn type_tag(e: Elementary) -> &'static str {
         E::Ldate => "LADDERC_T_LDATE",
         E::Ltod => "LADDERC_T_LTOD",
         E::Ldt => "LADDERC_T_LDT",
+        E::Char => "LADDERC_T_CHAR",
+        E::Wchar => "LADDERC_T_WCHAR",
     }
 }
 
 /// The runtime type whose ordering helpers (`ladderc_gt_<T>`) compare values of `e`.
 pub fn ordered_helper_type(e: Elementary) -> &'static str {
     match e {
-        E::Bool | E::Usint | E::Byte => "IEC_USINT",
-        E::Uint | E::Word => "IEC_UINT",
+        E::Bool | E::Usint | E::Byte | E::Char => "IEC_USINT",
+        E::Uint | E::Word | E::Wchar => "IEC_UINT",
         E::Udint | E::Dword => "IEC_UDINT",
         E::Ulint | E::Lword => "IEC_ULINT",
         E::Sint => "IEC_SINT",
@@ -91,8 +95,8 @@ pub fn ordered_helper_type(e: Elementary) -> &'static str {
 pub fn arith_helper_type(e: Elementary) -> Option<&'static str> {
     match e {
         E::Real | E::Lreal => None,
-        E::Bool | E::Usint | E::Byte => Some("IEC_USINT"),
-        E::Uint | E::Word => Some("IEC_UINT"),
+        E::Bool | E::Usint | E::Byte | E::Char => Some("IEC_USINT"),
+        E::Uint | E::Word | E::Wchar => Some("IEC_UINT"),
         E::Udint | E::Dword => Some("IEC_UDINT"),
         E::Ulint | E::Lword => Some("IEC_ULINT"),
         E::Sint => Some("IEC_SINT"),
@@ -248,7 +252,16 @@ pub fn int_literal(e: Elementary, v: i128) -> String {
         E::Bool => (if v != 0 { "1" } else { "0" }).to_string(),
         E::Real => cfmt!("((IEC_REAL){v}.0)"),
         E::Lreal => cfmt!("((IEC_LREAL){v}.0)"),
-        E::Usint | E::Uint | E::Udint | E::Ulint | E::Byte | E::Word | E::Dword | E::Lword => {
+        E::Usint
+        | E::Uint
+        | E::Udint
+        | E::Ulint
+        | E::Byte
+        | E::Word
+        | E::Dword
+        | E::Lword
+        | E::Char
+        | E::Wchar => {
             let bits = e.bit_width();
             let masked = (v as u128)
                 & if bits >= 64 {

@@ -261,6 +261,8 @@ pub fn is_elementary(u: &str) -> bool {
             | "LTIME_OF_DAY"
             | "LDT"
             | "LDATE_AND_TIME"
+            | "CHAR"
+            | "WCHAR"
             | "STRING"
             | "WSTRING"
             | "BYTE"
@@ -428,6 +430,8 @@ fn static_name(u: &str) -> Option<&'static str> {
         "LTIME_OF_DAY",
         "LDT",
         "LDATE_AND_TIME",
+        "CHAR",
+        "WCHAR",
         "STRING",
         "WSTRING",
         "BYTE",
@@ -455,12 +459,14 @@ pub enum Family {
     Date,
     /// STRING, WSTRING.
     String,
+    /// Edition 3's characters: CHAR, WCHAR.
+    Char,
 }
 
 /// The family of an elementary type name (case-insensitive); `None` for user and FB types.
 pub fn family(type_name: &str) -> Option<Family> {
     // Compared without case instead of upper-casing a copy: called for every contact and coil.
-    const FAMILIES: [(&str, Family); 29] = [
+    const FAMILIES: [(&str, Family); 31] = [
         ("BOOL", Family::Bool),
         ("SINT", Family::Int),
         ("INT", Family::Int),
@@ -490,6 +496,8 @@ pub fn family(type_name: &str) -> Option<Family> {
         ("LDATE_AND_TIME", Family::Date),
         ("STRING", Family::String),
         ("WSTRING", Family::String),
+        ("CHAR", Family::Char),
+        ("WCHAR", Family::Char),
     ];
     FAMILIES
         .iter()

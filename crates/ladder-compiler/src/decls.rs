@@ -43,6 +43,8 @@ fn elementary(name: &str) -> Option<&'static str> {
         "LDATE" => "LDATE",
         "LDT" => "LDT",
         "LTOD" => "LTOD",
+        "CHAR" => "CHAR",
+        "WCHAR" => "WCHAR",
         _ => return None,
     })
 }

@@ -221,6 +221,29 @@ pub fn literal(t: &str, span: Span) -> Option<Literal> {
             span,
         ));
     }
+    // edition 3's typed characters: `CHAR#'A'`, `WCHAR#"A"` (a character's own text may be `#`)
+    for (prefix, name) in [("CHAR#", "CHAR"), ("WCHAR#", "WCHAR")] {
+        let Some(rest) = t
+            .get(..prefix.len())
+            .filter(|p| p.eq_ignore_ascii_case(prefix))
+            .map(|_| &t[prefix.len()..])
+        else {
+            continue;
+        };
+        let q = rest.chars().next()?;
+        let body = rest.strip_prefix(q)?.strip_suffix(q)?;
+        if q != '\'' && q != '"' {
+            return None;
+        }
+        return Some(lit(
+            LiteralKind::String {
+                wide: q == '"',
+                value: unescape_string(body)?,
+            },
+            Some(name),
+            span,
+        ));
+    }
     if let Some((prefix, value)) = t.split_once('#') {
         let p = prefix.to_ascii_uppercase();
         match p.as_str() {

@@ -796,6 +796,9 @@ impl Gen<'_> {
                     _ => v.clone(),
                 })
             }
+            // edition 3
+            "IS_VALID" => Some(cfmt!("((IEC_BOOL)(isfinite({}) != 0))", vals.first()?)),
+            "IS_VALID_BCD" => Some(cfmt!("ladderc_is_valid_bcd((uint64_t)({}))", vals.first()?)),
             "SQRT" | "LN" | "LOG" | "EXP" | "SIN" | "COS" | "TAN" | "ASIN" | "ACOS" | "ATAN" => {
                 let e = e?;
                 let f = match name {
@@ -901,6 +904,27 @@ impl Gen<'_> {
                     widen(text)
                 } else {
                     text
+                });
+            }
+            // edition 3: a character to the one-character string; WCHAR to WSTRING keeps its
+            // code (not through STRING)
+            (Some(f @ (E::Char | E::Wchar)), None) if to.is_string() && !to.is_error() => {
+                let wide_to = matches!(to, Type::String { wide: true, .. });
+                return Some(match (f, wide_to) {
+                    (E::Char, false) => cfmt!("ladderc_char_to_str({v})"),
+                    (E::Char, true) => cfmt!("ladderc_wchar_to_wstr((IEC_WCHAR)({v}))"),
+                    (_, false) => cfmt!("ladderc_char_to_str(ladderc_wchar_to_char({v}))"),
+                    (_, true) => cfmt!("ladderc_wchar_to_wstr({v})"),
+                });
+            }
+            // edition 3: a string to its first character (NUL of an empty string)
+            (None, Some(t @ (E::Char | E::Wchar))) if from.is_string() && !from.is_error() => {
+                let wide_from = matches!(from, Type::String { wide: true, .. });
+                return Some(match (wide_from, t) {
+                    (false, E::Char) => cfmt!("ladderc_str_first({v})"),
+                    (false, _) => cfmt!("((IEC_WCHAR)ladderc_str_first({v}))"),
+                    (true, E::Char) => cfmt!("ladderc_wchar_to_char(ladderc_wstr_first({v}))"),
+                    (true, _) => cfmt!("ladderc_wstr_first({v})"),
                 });
             }
             (Some(f), None) if to.is_string() && !to.is_error() => {

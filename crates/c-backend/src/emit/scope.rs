@@ -473,6 +473,22 @@ impl Gen<'_> {
                 Accessor::Index(idx) if matches!(ty, Type::Ref(_)) && idx.len() == 1 => {
                     self.deref_place(scope, &lv, &ty, r, at, r.span, idx.first())?
                 }
+                // edition 3: `s[i]`, the i-th character (1-based) of a STRING or a WSTRING; out
+                // of 1..LEN(s) a NUL read and a write dropped (`ladderc_char_at`)
+                Accessor::Index(idx) if matches!(ty, Type::String { .. }) && idx.len() == 1 => {
+                    let wide = matches!(ty, Type::String { wide: true, .. });
+                    let site = self.index_site(scope, r, at);
+                    let i = self.value(scope, &idx[0], &Type::Elementary(E::Lint))?;
+                    let f = if wide {
+                        "ladderc_wchar_at"
+                    } else {
+                        "ladderc_char_at"
+                    };
+                    Place::Mem {
+                        lv: cfmt!("(*{f}(&({lv}), {i}, {site}))"),
+                        ty: Type::Elementary(if wide { E::Wchar } else { E::Char }),
+                    }
+                }
                 Accessor::Index(idx) => {
                     let site = self.index_site(scope, r, at);
                     self.index(scope, &lv, &ty, idx, r.span, &site)?
@@ -996,6 +1012,11 @@ impl Gen<'_> {
             LiteralKind::Date(days) => {
                 ctypes::int_literal(e, i128::from(*days) * 86_400_000_000_000)
             }
+            // edition 3's characters (`CHAR#'A'`, or `'A'` where a CHAR is expected): the code
+            LiteralKind::String { value, .. } if e.is_char() => ctypes::int_literal(
+                e,
+                value.chars().next().map_or(0, |c| i128::from(u32::from(c))),
+            ),
             LiteralKind::String { .. } => {
                 self.unsupported(l.span, "a string literal where a number is expected");
                 return None;

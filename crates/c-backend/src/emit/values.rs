@@ -53,6 +53,9 @@ pub fn area_array(area: Area) -> &'static str {
 
 /// Converts a C expression of IEC type `from` to IEC type `to` (implicit conversions: widening, BOOL).
 pub fn convert(expr: &str, from: &Type, to: &Type) -> String {
+    if let Some(s) = char_as_string(expr, from, to) {
+        return s;
+    }
     match conversion(from, to) {
         Some((f, t)) => convert_elementary(expr, f, t),
         None => expr.to_string(),
@@ -61,6 +64,9 @@ pub fn convert(expr: &str, from: &Type, to: &Type) -> String {
 
 /// [`convert`] that borrows `expr` when its text stays.
 pub fn convert_cow<'e>(expr: &'e str, from: &Type, to: &Type) -> Cow<'e, str> {
+    if let Some(s) = char_as_string(expr, from, to) {
+        return Cow::Owned(s);
+    }
     match conversion(from, to) {
         Some((f, t)) if f != t => Cow::Owned(convert_elementary(expr, f, t)),
         _ => Cow::Borrowed(expr),
@@ -70,10 +76,28 @@ pub fn convert_cow<'e>(expr: &'e str, from: &Type, to: &Type) -> Cow<'e, str> {
 /// [`convert`] of an expression the caller gives away: returned as it is (no copy) when its text
 /// stays.
 pub fn convert_owned(expr: String, from: &Type, to: &Type) -> String {
+    if let Some(s) = char_as_string(&expr, from, to) {
+        return s;
+    }
     match conversion(from, to) {
         Some((f, t)) if f != t => convert_elementary(&expr, f, t),
         _ => expr,
     }
+}
+
+/// A CHAR (WCHAR) where a string is expected (sema allows it in edition 3's CONCAT only): its
+/// one-character STRING (WSTRING).
+fn char_as_string(expr: &str, from: &Type, to: &Type) -> Option<String> {
+    let Type::String { wide, .. } = to else {
+        return None;
+    };
+    Some(match (from.elementary()?, wide) {
+        (E::Char, false) => cfmt!("ladderc_char_to_str({expr})"),
+        (E::Char, true) => cfmt!("ladderc_wchar_to_wstr((IEC_WCHAR)({expr}))"),
+        (E::Wchar, true) => cfmt!("ladderc_wchar_to_wstr({expr})"),
+        (E::Wchar, false) => cfmt!("ladderc_char_to_str(ladderc_wchar_to_char({expr}))"),
+        _ => return None,
+    })
 }
 
 /// The elementary types [`convert`] converts between; `None` when the text stays.
@@ -103,6 +127,10 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     }
     let ct = ctypes::elementary(t);
     let time_like = |e: Elementary| e.is_duration() || e.is_date();
+    if (f, t) == (E::Wchar, E::Char) {
+        // a code a CHAR cannot hold: '?' (as WSTRING_TO_STRING), and the range flag
+        return cfmt!("ladderc_wchar_to_char({x})");
+    }
     if t == E::Bool {
         return cfmt!("((IEC_BOOL)(({x}) != 0))");
     }

@@ -988,7 +988,19 @@ impl Body<'_, '_> {
                 ins
             }
         };
-        let typed: Vec<(Ty, Span)> = inputs.iter().map(|(t, s, _)| (t.clone(), *s)).collect();
+        let mut typed: Vec<(Ty, Span)> = inputs.iter().map(|(t, s, _)| (t.clone(), *s)).collect();
+        if f.name == "CONCAT" {
+            // edition 3 (Table 29: CONCAT of ANY_CHARS): a CHAR (WCHAR) joins as the
+            // one-character STRING (WSTRING)
+            for (t, _) in &mut typed {
+                if let Ty::Known(Type::Elementary(e)) = t {
+                    if e.is_char() {
+                        let wide = *e == Elementary::Wchar;
+                        *t = Ty::Known(Type::String { wide, len: 1 });
+                    }
+                }
+            }
+        }
         let inst = self.instantiate(f, &typed, span);
         for (i, (t, _, source)) in inputs.into_iter().enumerate() {
             let pty = match f.param_ty(i) {

@@ -1519,6 +1519,18 @@ impl Analyzer<'_> {
                         return None;
                     }
                     LitType::Real(_) => literal_fits(0, 0, true, ty).is_ok(),
+                    // `'A'`: a STRING, or (edition 3) a CHAR; `"A"` a WSTRING or a WCHAR
+                    LitType::Char(wide) => match ty {
+                        Type::String { wide: w, .. } => w == wide,
+                        t => {
+                            t.elementary()
+                                == Some(if *wide {
+                                    Elementary::Wchar
+                                } else {
+                                    Elementary::Char
+                                })
+                        }
+                    },
                 };
                 if !ok {
                     self.error(
@@ -1815,10 +1827,11 @@ pub fn reserved_name(name: &str) -> Option<&'static str> {
     let is = |k: &&str| k.eq_ignore_ascii_case(name);
     if may_be_keyword && KEYWORDS.iter().any(is) {
         Some("a keyword")
-    } else if Elementary::from_name(name).is_some_and(|e| !e.is_long_date())
+    } else if Elementary::from_name(name).is_some_and(|e| !e.is_long_date() && !e.is_char())
         || ["STRING", "WSTRING", "LTIME"].iter().any(is)
     {
-        // (edition 3's LDATE, LTOD, LDT are not reserved: edition-2 projects name variables so)
+        // (edition 3's LDATE, LTOD, LDT, CHAR, WCHAR are not reserved: edition-2 projects name
+        // variables so)
         Some("an elementary data type")
     } else if StdFb::from_name(name).is_some() && !StdFb::is_vendor_name(name) {
         Some("a standard function block")

@@ -71,13 +71,18 @@ pub enum Elementary {
     /// `LDT` / `LDATE_AND_TIME` (edition 3): nanoseconds since 1970-01-01T00:00:00; as a number,
     /// nanoseconds.
     Ldt,
+    /// `CHAR` (IEC 61131-3 edition 3, Table 10): a single-byte character (ISO 8859-1, as a
+    /// STRING's characters here), its code 0..255.
+    Char,
+    /// `WCHAR` (edition 3): a double-byte character (UCS-2, as a WSTRING's), its code 0..65535.
+    Wchar,
 }
 
 use Elementary as E;
 
 impl Elementary {
     /// Every elementary type, in declaration order.
-    pub const ALL: [Elementary; 23] = [
+    pub const ALL: [Elementary; 25] = [
         E::Bool,
         E::Sint,
         E::Int,
@@ -101,6 +106,8 @@ impl Elementary {
         E::Ldate,
         E::Ltod,
         E::Ldt,
+        E::Char,
+        E::Wchar,
     ];
 
     /// The canonical IEC name (`TOD`, `DT`: the short forms).
@@ -129,6 +136,8 @@ impl Elementary {
             E::Ldate => "LDATE",
             E::Ltod => "LTOD",
             E::Ldt => "LDT",
+            E::Char => "CHAR",
+            E::Wchar => "WCHAR",
         }
     }
 
@@ -156,8 +165,8 @@ impl Elementary {
     pub fn bit_width(self) -> u32 {
         match self {
             E::Bool => 1,
-            E::Sint | E::Usint | E::Byte => 8,
-            E::Int | E::Uint | E::Word => 16,
+            E::Sint | E::Usint | E::Byte | E::Char => 8,
+            E::Int | E::Uint | E::Word | E::Wchar => 16,
             E::Dint | E::Udint | E::Dword | E::Real => 32,
             E::Lint | E::Ulint | E::Lword | E::Lreal => 64,
             E::Time | E::Ltime | E::Date | E::Tod | E::Dt | E::Ldate | E::Ltod | E::Ldt => 64,
@@ -219,6 +228,10 @@ impl Elementary {
             E::Dt | E::Ldt => Some(E::Dt),
             _ => None,
         }
+    }
+    /// ANY_CHAR = CHAR WCHAR (edition 3).
+    pub fn is_char(self) -> bool {
+        matches!(self, E::Char | E::Wchar)
     }
     /// LDATE, LTOD, LDT: the date types whose number is nanoseconds.
     pub fn is_long_date(self) -> bool {

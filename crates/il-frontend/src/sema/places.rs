@@ -72,6 +72,7 @@ impl Body<'_, '_> {
             Ok(LitType::Known(t)) => Ty::Known(t),
             Ok(LitType::Int(v)) => Ty::Lit(self.lits.new_int(v, l.span)),
             Ok(LitType::Real(v)) => Ty::Lit(self.lits.new_real(v, l.span)),
+            Ok(LitType::Char(wide)) => Ty::Lit(self.lits.new_char(wide, l.span)),
             Err(e) => {
                 self.a
                     .error(code::E1017, l.span, e.message)
@@ -454,6 +455,42 @@ impl Body<'_, '_> {
                         None => return Place::error(),
                     };
                 }
+                // edition 3: `s[i]`, the i-th character of a STRING (a CHAR) or of a WSTRING (a
+                // WCHAR), 1-based; checked against LEN(s) at run time
+                Accessor::Index(ixs) if matches!(place.ty, Type::String { .. }) => {
+                    let Type::String { wide, len } = place.ty else {
+                        return Place::error();
+                    };
+                    if ixs.len() != 1 {
+                        let path = path_text(v, at);
+                        self.a
+                            .error(
+                                code::E1021,
+                                v.span,
+                                format!(
+                                    "`{path}` is a string: one index gives a character, {} are given",
+                                    ixs.len()
+                                ),
+                            )
+                            .label("wrong number of indexes")
+                            .hint("write s[i] for the i-th character (1 is the first)");
+                        return Place::error();
+                    }
+                    self.index_operand(&ixs[0]);
+                    let d = Dim {
+                        lower: 1,
+                        upper: i128::from(len.max(1)),
+                    };
+                    self.constant_char_index_in_bounds(&ixs[0], &d, v, at);
+                    place = Place {
+                        ty: Type::Elementary(if wide {
+                            Elementary::Wchar
+                        } else {
+                            Elementary::Char
+                        }),
+                        read_only: place.read_only,
+                    };
+                }
                 Accessor::Index(ixs) => {
                     let Type::Array { dims, element } = &place.ty else {
                         let path = path_text(v, at);
@@ -528,6 +565,32 @@ impl Body<'_, '_> {
             .hint(format!(
                 "index with a value from {} to {}, or declare the array with bounds that hold {k}",
                 d.lower, d.upper
+            ));
+    }
+
+    /// E1050 when the index of a string's character `s[i]` is an integer literal outside 1..the
+    /// declared length (a computed one is checked against LEN(s) at run time).
+    fn constant_char_index_in_bounds(&mut self, ix: &Operand, d: &Dim, v: &VarRef, at: usize) {
+        let Operand::Literal(l) = ix else { return };
+        let ast::LiteralKind::Int(k) = l.kind else {
+            return;
+        };
+        if (d.lower..=d.upper).contains(&k) {
+            return;
+        }
+        let path = path_text(v, at);
+        self.a
+            .error(
+                code::E1050,
+                l.span,
+                format!(
+                    "character {k} is outside the declared length 1..{} of `{path}`",
+                    d.upper
+                ),
+            )
+            .label("outside the string")
+            .hint(format!(
+                "s[i] is the i-th character, from 1 to the string's length; declare `{path}` longer to hold {k} characters"
             ));
     }
 

@@ -204,6 +204,10 @@ pub static FUNCTIONS: &[StdFunction] = &[
     // numeric functions
     f("ABS", NUM1, false, Ret::T, "absolute value"),
     f("SQRT", REAL1, false, Ret::T, "square root"),
+    // edition 3: whether a real is a number (neither NaN nor an infinity), whether a bit string
+    // holds BCD (every nibble 0..9)
+    f("IS_VALID", REAL1, false, Ret::Fixed(E::Bool), "TRUE unless IN is NaN or an infinity"),
+    f("IS_VALID_BCD", &[p("IN", T(AnyBit))], false, Ret::Fixed(E::Bool), "TRUE when every 4-bit digit of IN is 0..9"),
     f("LN", REAL1, false, Ret::T, "natural logarithm"),
     f("LOG", REAL1, false, Ret::T, "logarithm base 10"),
     f("EXP", REAL1, false, Ret::T, "natural exponential"),
@@ -624,8 +628,18 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
                 || (f.is_date() && plain(t))
                 || (t.is_date() && plain(f))
                 || (f == t)
+                // edition 3's characters (Table 22 and CODESYS's): with each other, with the
+                // integers and the bit strings but BOOL (their code)
+                || (f.is_char() && (t.is_char() || code_of_char(t)))
+                || (t.is_char() && code_of_char(f))
         }
     }
+}
+
+/// The types a CHAR or WCHAR converts to and from as its code: the integers, and the bit strings
+/// but BOOL.
+fn code_of_char(e: E) -> bool {
+    e.is_integer() || (e.is_bit() && e != E::Bool)
 }
 
 /// `TO_STRING`, `TO_WSTRING` and `TO_<integer or bit string>` of an enumerated value, as CODESYS and

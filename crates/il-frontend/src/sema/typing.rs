@@ -155,6 +155,9 @@ pub enum LitType {
     Int(i128),
     /// An untyped real literal, with its value.
     Real(f64),
+    /// An untyped one-character string literal (`wide`: `"A"`): a STRING, or edition 3's CHAR
+    /// where one is expected.
+    Char(bool),
 }
 
 /// A problem with a typed literal.
@@ -243,6 +246,33 @@ pub fn literal_type(lit: &Literal) -> Result<LitType, LitError> {
         (LiteralKind::Date(_), p) => Ok(LitType::Known(Type::Elementary(long_or(p, E::Date)))),
         (LiteralKind::TimeOfDay(_), p) => Ok(LitType::Known(Type::Elementary(long_or(p, E::Tod)))),
         (LiteralKind::DateAndTime(_), p) => Ok(LitType::Known(Type::Elementary(long_or(p, E::Dt)))),
+        // edition 3's typed characters: `CHAR#'A'`, `WCHAR#"A"` (one character; a CHAR's up
+        // to U+00FF)
+        (LiteralKind::String { value, .. }, Some((name, Some(e)))) if e.is_char() => {
+            let mut cs = value.chars();
+            match (cs.next(), cs.next()) {
+                (Some(c), None) if e == E::Wchar || u32::from(c) <= 0xFF => {
+                    Ok(LitType::Known(Type::Elementary(e)))
+                }
+                (Some(c), None) => Err(LitError {
+                    message: format!("`{c}` is no single-byte character for CHAR"),
+                    hint: "a CHAR holds U+0000-U+00FF; use WCHAR#\"...\" for other characters"
+                        .into(),
+                }),
+                _ => Err(LitError {
+                    message: format!(
+                        "a {} literal holds exactly one character, `{value}` has {}",
+                        name.to_ascii_uppercase(),
+                        value.chars().count()
+                    ),
+                    hint: "write one character, e.g. CHAR#'A', or CHAR#'$00' for NUL; use a STRING for text"
+                        .into(),
+                }),
+            }
+        }
+        (LiteralKind::String { wide, value }, None) if value.chars().count() == 1 => {
+            Ok(LitType::Char(*wide))
+        }
         (LiteralKind::String { wide, value }, _) => Ok(LitType::Known(Type::String {
             wide: *wide,
             len: value.chars().count().max(1) as u32,
@@ -286,6 +316,10 @@ pub fn literal_value(lit: &Literal, ty: &Type) -> ConstValue {
         LiteralKind::Date(d) => ConstValue::Date(*d),
         LiteralKind::TimeOfDay(t) => ConstValue::TimeOfDay(*t),
         LiteralKind::DateAndTime(t) => ConstValue::DateAndTime(*t),
+        // edition 3's characters: their code
+        LiteralKind::String { value, .. } if ty.elementary().is_some_and(|e| e.is_char()) => {
+            ConstValue::Int(value.chars().next().map_or(0, |c| i128::from(u32::from(c))))
+        }
         LiteralKind::String { wide, value } => ConstValue::String {
             wide: *wide,
             value: value.clone(),
@@ -378,6 +412,9 @@ struct LitInfo {
     /// The largest magnitude of the class's real literals (0 without any) and the literal holding it.
     real_max: f64,
     real_span: Span,
+    /// An untyped one-character string literal (`'A'`: `Some(false)`, `"A"`: `Some(true)`): a
+    /// STRING (WSTRING), or edition 3's CHAR (WCHAR) where one is expected.
+    chars: Option<bool>,
 }
 
 /// Whether a real value of magnitude `magnitude` fits `ty` without becoming an infinity: every value
@@ -421,6 +458,7 @@ impl LitVars {
             max_span: span,
             real_max: 0.0,
             real_span: span,
+            chars: None,
         })
     }
     /// A new variable for an untyped real literal of value `v` at `span`; returns its index.
@@ -435,7 +473,29 @@ impl LitVars {
             max_span: span,
             real_max: v.abs(),
             real_span: span,
+            chars: None,
         })
+    }
+    /// A new variable for an untyped one-character string literal (`wide`: `"A"`); returns its
+    /// index.
+    pub fn new_char(&mut self, wide: bool, span: Span) -> usize {
+        self.push(LitInfo {
+            min: 0,
+            max: 0,
+            real: false,
+            int_only: false,
+            bound: None,
+            min_span: span,
+            max_span: span,
+            real_max: 0.0,
+            real_span: span,
+            chars: Some(wide),
+        })
+    }
+    /// Whether `v`'s class is a one-character string literal.
+    pub fn is_chars(&mut self, v: usize) -> bool {
+        let r = self.find(v);
+        self.info[r].chars.is_some()
     }
     fn push(&mut self, i: LitInfo) -> usize {
         self.parent.push(self.parent.len());
@@ -499,6 +559,19 @@ impl LitVars {
                 Err(BindError::Kind { span: i.min_span })
             };
         }
+        if let Some(wide) = i.chars {
+            // a string of its kind, or (edition 3) the character of its kind
+            let fits = match ty {
+                Type::String { wide: w, .. } => *w == wide,
+                Type::Error => true,
+                t => t.elementary() == Some(if wide { E::Wchar } else { E::Char }),
+            };
+            if !fits {
+                return Err(BindError::Kind { span: i.min_span });
+            }
+            self.info[r].bound = Some(ty.clone());
+            return Ok(());
+        }
         if !real_fits(i.real_max, ty) {
             return Err(BindError::RealRange { span: i.real_span });
         }
@@ -540,6 +613,7 @@ impl LitVars {
             ia.real_span = ib.real_span;
         }
         ia.int_only |= ib.int_only;
+        ia.chars = ia.chars.or(ib.chars);
         if ia.bound.is_none() {
             ia.bound = ib.bound;
         }
@@ -550,13 +624,17 @@ impl LitVars {
     pub fn resolve(&mut self, v: usize) -> Type {
         let r = self.find(v);
         let i = &self.info[r];
-        i.bound
-            .clone()
-            .unwrap_or_else(|| literal_default(i.min, i.max, i.real))
+        match (&i.bound, i.chars) {
+            (Some(b), _) => b.clone(),
+            (None, Some(wide)) => Type::String { wide, len: 1 },
+            (None, None) => literal_default(i.min, i.max, i.real),
+        }
     }
     /// Human description ("an integer literal").
     pub fn describe(&mut self, v: usize) -> &'static str {
-        if self.is_real(v) {
+        if self.is_chars(v) {
+            "a string literal"
+        } else if self.is_real(v) {
             "a real literal"
         } else {
             "an integer literal"
