@@ -377,15 +377,20 @@ static inline size_t ladderc_index(int64_t i, int64_t lo, int64_t hi, const char
 /* Edition 3's `s[i]` of a STRING (a CHAR) or a WSTRING (a WCHAR), 1-based: the character's place.
  * An index outside 1..LEN(s) sets LADDERC_ERR_CHAR_INDEX (the first site and index kept) and gives a
  * scratch character, NUL each time it is handed out: a read gives NUL, a write is dropped. */
+/* Whether 1 <= i <= len; otherwise sets LADDERC_ERR_CHAR_INDEX (the first site and index kept). */
+static inline int ladderc_char_index_ok(int64_t i, size_t len, const char *site) {
+    if (i >= 1 && i <= (int64_t)len) return 1;
+    if (!(ladderc_errors & LADDERC_ERR_CHAR_INDEX)) {
+        ladderc_char_index_site = site;
+        ladderc_char_index_at[0] = i;
+        ladderc_char_index_at[1] = (int64_t)len;
+    }
+    ladderc_errors |= LADDERC_ERR_CHAR_INDEX;
+    return 0;
+}
 static inline IEC_CHAR *ladderc_char_at(IEC_STRING *s, int64_t i, const char *site) {
     static IEC_CHAR scratch;
-    if (i < 1 || i > (int64_t)s->len) {
-        if (!(ladderc_errors & LADDERC_ERR_CHAR_INDEX)) {
-            ladderc_char_index_site = site;
-            ladderc_char_index_at[0] = i;
-            ladderc_char_index_at[1] = (int64_t)s->len;
-        }
-        ladderc_errors |= LADDERC_ERR_CHAR_INDEX;
+    if (!ladderc_char_index_ok(i, s->len, site)) {
         scratch = 0;
         return &scratch;
     }
@@ -393,13 +398,7 @@ static inline IEC_CHAR *ladderc_char_at(IEC_STRING *s, int64_t i, const char *si
 }
 static inline IEC_WCHAR *ladderc_wchar_at(IEC_WSTRING *s, int64_t i, const char *site) {
     static IEC_WCHAR scratch;
-    if (i < 1 || i > (int64_t)s->len) {
-        if (!(ladderc_errors & LADDERC_ERR_CHAR_INDEX)) {
-            ladderc_char_index_site = site;
-            ladderc_char_index_at[0] = i;
-            ladderc_char_index_at[1] = (int64_t)s->len;
-        }
-        ladderc_errors |= LADDERC_ERR_CHAR_INDEX;
+    if (!ladderc_char_index_ok(i, s->len, site)) {
         scratch = 0;
         return &scratch;
     }

@@ -317,14 +317,7 @@ fn configuration(json: &Value, file: &Path, diags: &mut Diagnostics) -> Option<S
             }
         }
         d.push_str(&format!(" : {ty}"));
-        let init = g.get("initialValue").and_then(|v| {
-            v.as_str().map(str::to_string).or_else(|| {
-                v.get("simpleValue")?
-                    .get("value")?
-                    .as_str()
-                    .map(str::to_string)
-            })
-        });
+        let init = initial_value(g);
         match init.as_deref().map(str::trim) {
             Some("") | None => {}
             Some(v) if is_literal(v) => d.push_str(&format!(" := {v}")),
@@ -389,6 +382,17 @@ fn configuration(json: &Value, file: &Path, diags: &mut Diagnostics) -> Option<S
     }
     text.push_str("    END_RESOURCE\nEND_CONFIGURATION\n");
     Some(text)
+}
+
+/// A v4 variable's initial value as the editor writes it: a string, or `{"simpleValue": {"value": ...}}`.
+pub(crate) fn initial_value(variable: &Value) -> Option<String> {
+    let v = variable.get("initialValue")?;
+    v.as_str().map(str::to_string).or_else(|| {
+        v.get("simpleValue")?
+            .get("value")?
+            .as_str()
+            .map(str::to_string)
+    })
 }
 
 #[cfg(test)]

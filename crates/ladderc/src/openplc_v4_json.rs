@@ -286,18 +286,9 @@ fn body_of(pou: &J) -> Option<(&J, Option<&J>)> {
     }
 }
 
-/// The byte offset of 1-based `line` and `column` in `text`, clamped to it.
+/// The byte offset of 1-based `line` and `column` in `text`, clamped to its last byte.
 fn offset_of(text: &str, line: usize, column: usize) -> usize {
-    let mut at = 0;
-    for (k, l) in text.split_inclusive('\n').enumerate() {
-        if k + 1 == line {
-            return (at + column.saturating_sub(1))
-                .min(at + l.len())
-                .min(text.len().saturating_sub(1));
-        }
-        at += l.len();
-    }
-    text.len().saturating_sub(1)
+    crate::openplc_v4_ld::offset_of(text, line, column).min(text.len().saturating_sub(1))
 }
 
 type Fail = Box<Diagnostic>;
@@ -431,14 +422,7 @@ fn write_pou(
             }
         }
         decl.extend([":".into(), ty]);
-        let init = value.get("initialValue").and_then(|v| {
-            v.as_str().map(str::to_string).or_else(|| {
-                v.get("simpleValue")?
-                    .get("value")?
-                    .as_str()
-                    .map(str::to_string)
-            })
-        });
+        let init = crate::openplc_v4::initial_value(&value);
         match init.as_deref().map(str::trim) {
             Some("") | None => {}
             Some(i) if is_literal(i) => decl.extend([":=".into(), i.to_string()]),

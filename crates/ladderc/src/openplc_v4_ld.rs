@@ -87,7 +87,7 @@ pub fn json_end(src: &str, start: usize) -> usize {
 }
 
 /// The byte offset of 1-based `line` and `column` in `text`, clamped to it.
-fn offset_of(text: &str, line: usize, column: usize) -> usize {
+pub(crate) fn offset_of(text: &str, line: usize, column: usize) -> usize {
     let mut at = 0;
     for (k, l) in text.split_inclusive('\n').enumerate() {
         if k + 1 == line {

@@ -481,7 +481,7 @@ impl Body<'_, '_> {
                         lower: 1,
                         upper: i128::from(len.max(1)),
                     };
-                    self.constant_char_index_in_bounds(&ixs[0], &d, v, at);
+                    self.constant_index_in_bounds(&ixs[0], &d, v, at, true);
                     place = Place {
                         ty: Type::Elementary(if wide {
                             Elementary::Wchar
@@ -523,7 +523,7 @@ impl Body<'_, '_> {
                     }
                     for (ix, d) in ixs.iter().zip(dims.iter()) {
                         self.index_operand(ix);
-                        self.constant_index_in_bounds(ix, d, v, at);
+                        self.constant_index_in_bounds(ix, d, v, at, false);
                     }
                     place = Place {
                         ty: element,
@@ -542,8 +542,17 @@ impl Body<'_, '_> {
     }
 
     /// E1050 when the index is an integer literal outside the dimension's bounds (IEC 61131-3:
-    /// an error; a computed index is checked at run time).
-    fn constant_index_in_bounds(&mut self, ix: &Operand, d: &Dim, v: &VarRef, at: usize) {
+    /// an error; a computed index is checked at run time); for a string's character `s[i]`
+    /// (`character`), outside 1..the declared length (a computed one is checked against LEN(s)
+    /// at run time).
+    fn constant_index_in_bounds(
+        &mut self,
+        ix: &Operand,
+        d: &Dim,
+        v: &VarRef,
+        at: usize,
+        character: bool,
+    ) {
         let Operand::Literal(l) = ix else { return };
         let ast::LiteralKind::Int(k) = l.kind else {
             return;
@@ -552,46 +561,34 @@ impl Body<'_, '_> {
             return;
         }
         let path = path_text(v, at);
-        self.a
-            .error(
-                code::E1050,
-                l.span,
-                format!(
-                    "index {k} is outside the bounds {}..{} of `{path}`",
-                    d.lower, d.upper
-                ),
-            )
-            .label("outside the array")
-            .hint(format!(
-                "index with a value from {} to {}, or declare the array with bounds that hold {k}",
-                d.lower, d.upper
-            ));
-    }
-
-    /// E1050 when the index of a string's character `s[i]` is an integer literal outside 1..the
-    /// declared length (a computed one is checked against LEN(s) at run time).
-    fn constant_char_index_in_bounds(&mut self, ix: &Operand, d: &Dim, v: &VarRef, at: usize) {
-        let Operand::Literal(l) = ix else { return };
-        let ast::LiteralKind::Int(k) = l.kind else {
-            return;
-        };
-        if (d.lower..=d.upper).contains(&k) {
-            return;
-        }
-        let path = path_text(v, at);
-        self.a
-            .error(
-                code::E1050,
-                l.span,
+        let (message, label, hint) = if character {
+            (
                 format!(
                     "character {k} is outside the declared length 1..{} of `{path}`",
                     d.upper
                 ),
+                "outside the string",
+                format!(
+                    "s[i] is the i-th character, from 1 to the string's length; declare `{path}` longer to hold {k} characters"
+                ),
             )
-            .label("outside the string")
-            .hint(format!(
-                "s[i] is the i-th character, from 1 to the string's length; declare `{path}` longer to hold {k} characters"
-            ));
+        } else {
+            (
+                format!(
+                    "index {k} is outside the bounds {}..{} of `{path}`",
+                    d.lower, d.upper
+                ),
+                "outside the array",
+                format!(
+                    "index with a value from {} to {}, or declare the array with bounds that hold {k}",
+                    d.lower, d.upper
+                ),
+            )
+        };
+        self.a
+            .error(code::E1050, l.span, message)
+            .label(label)
+            .hint(hint);
     }
 
     /// Checks one index of an array (or pointer) access: an integer.

@@ -417,6 +417,25 @@ struct LitInfo {
     chars: Option<bool>,
 }
 
+impl LitInfo {
+    /// A class of one literal at `span`: value 0, not real, no bound (the constructors of
+    /// [`LitVars`] set what their literal gives).
+    fn at(span: Span) -> Self {
+        LitInfo {
+            min: 0,
+            max: 0,
+            real: false,
+            int_only: false,
+            bound: None,
+            min_span: span,
+            max_span: span,
+            real_max: 0.0,
+            real_span: span,
+            chars: None,
+        }
+    }
+}
+
 /// Whether a real value of magnitude `magnitude` fits `ty` without becoming an infinity: every value
 /// fits LREAL (the literal parser already rejects the rest), REAL holds up to 3.4028235E38.
 pub fn real_fits(magnitude: f64, ty: &Type) -> bool {
@@ -451,45 +470,23 @@ impl LitVars {
         self.push(LitInfo {
             min: v,
             max: v,
-            real: false,
-            int_only: false,
-            bound: None,
-            min_span: span,
-            max_span: span,
-            real_max: 0.0,
-            real_span: span,
-            chars: None,
+            ..LitInfo::at(span)
         })
     }
     /// A new variable for an untyped real literal of value `v` at `span`; returns its index.
     pub fn new_real(&mut self, v: f64, span: Span) -> usize {
         self.push(LitInfo {
-            min: 0,
-            max: 0,
             real: true,
-            int_only: false,
-            bound: None,
-            min_span: span,
-            max_span: span,
             real_max: v.abs(),
-            real_span: span,
-            chars: None,
+            ..LitInfo::at(span)
         })
     }
     /// A new variable for an untyped one-character string literal (`wide`: `"A"`); returns its
     /// index.
     pub fn new_char(&mut self, wide: bool, span: Span) -> usize {
         self.push(LitInfo {
-            min: 0,
-            max: 0,
-            real: false,
-            int_only: false,
-            bound: None,
-            min_span: span,
-            max_span: span,
-            real_max: 0.0,
-            real_span: span,
             chars: Some(wide),
+            ..LitInfo::at(span)
         })
     }
     /// Whether `v`'s class is a one-character string literal.

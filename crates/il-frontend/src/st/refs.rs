@@ -97,7 +97,7 @@ impl RefTypes {
         Self::blank_keywords_deferring(file, src, toks, 0, true)
     }
 
-    /// The E0305 of the pointers' initial values left in the text ([`Self::deferred`]) that are
+    /// The E0305 of the pointers' initial values left in the text (held back while the text was read) that are
     /// not among the initial values computed at run time (`computed`, ranges of `:= expr`):
     /// reported, and the values blanked in `text`.
     pub fn settle_initial_values(&mut self, text: &mut String, computed: &[Range<usize>]) {
