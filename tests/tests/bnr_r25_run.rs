@@ -367,3 +367,43 @@ fn a_program_folder_var_file_is_noted_as_the_programs_only() {
         "{stderr}"
     );
 }
+
+/// A RETURN in `_INIT` ends `_INIT`, not the program's first cycle: `_CYCLIC` runs in cycle 1 too
+/// (Automation Studio runs `_INIT` once before the cyclic part), so `n` counts 1, 2, 3 and the
+/// statement after the RETURN never runs (`k` stays 1). (Before: the joined program returned, `n`
+/// counted 0, 1, 2.)
+#[test]
+fn a_return_in_init_ends_init_and_cyclic_still_runs_in_the_first_cycle() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    write_in(
+        d,
+        "Logical/Counter/Counter.var",
+        "VAR\n\tk : INT;\n\tn : INT;\nEND_VAR\n",
+    );
+    write_in(
+        d,
+        "Logical/Counter/Counter.st",
+        "PROGRAM _INIT\n\tk := 1;\n\tIF k = 1 THEN\n\t\tRETURN;\n\tEND_IF\n\tk := 99;\nEND_PROGRAM\n\n\
+         PROGRAM _CYCLIC\n\tn := n + 1;\nEND_PROGRAM\n",
+    );
+    let (code, trace, stderr) = in_dir(
+        d,
+        &[
+            "run",
+            "--lang",
+            "st",
+            "Logical/Counter/Counter.var",
+            "Logical/Counter/Counter.st",
+            "--cycles",
+            "3",
+            "--watch",
+            "Counter.n,Counter.k",
+            "--trace",
+            "-",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(column(&trace, "Counter.n"), [1.0, 2.0, 3.0], "{trace}");
+    assert_eq!(column(&trace, "Counter.k"), [1.0, 1.0, 1.0], "{trace}");
+}

@@ -168,7 +168,10 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
                     operand: Some(Operand::Var(flag_ref)),
                 }),
             ];
-            body.extend(init.body.iter().cloned());
+            // a RETURN of _INIT ends _INIT, not the first cycle: _CYCLIC still runs after it
+            let mut init_body = init.body.clone();
+            return_to(&mut init_body, &label);
+            body.extend(init_body);
             body.push(IlStmt::Label(label));
             if cyclic_is_host {
                 body.append(&mut p.body);
@@ -191,6 +194,24 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
     }
     diags.retain(|d| d.code != code::W0018 || !d.span.is_some_and(|s| own_files.contains(&s.file)));
     drop_codeless_programs(units, map, &with_parts, &mut dir_of, diags);
+}
+
+/// `stmts` (an `_INIT` body joined before `_CYCLIC`) with each RETURN a jump to `end`.
+fn return_to(stmts: &mut [IlStmt], end: &Ident) {
+    for s in stmts {
+        if let IlStmt::Instr(i) = s {
+            match &mut i.kind {
+                InstrKind::Return { cond } => {
+                    i.kind = InstrKind::Jump {
+                        cond: *cond,
+                        label: end.clone(),
+                    };
+                }
+                InstrKind::Deferred { body, .. } => return_to(body, end),
+                _ => {}
+            }
+        }
+    }
 }
 
 /// The `.var` and `.typ` files of a B&R program folder (it holds `IEC.prg`) none of whose program
