@@ -69,6 +69,8 @@ enum Last {
     LParen,
     Comma,
     Deferrable,
+    /// `.`: a keyword after it names a field (`r.Type`).
+    Dot,
     Other,
 }
 
@@ -184,6 +186,7 @@ impl<'s> Layout<'s> {
             Tok::Comma => Last::Comma,
             Tok::Amp | Tok::AmpN => Last::Deferrable,
             Tok::Word(w) if w.is_simple_op() => Last::Deferrable,
+            Tok::Dot => Last::Dot,
             _ => Last::Other,
         };
         if !matches!(tok, Tok::Eol | Tok::UnitStart | Tok::BodyStart) {
@@ -588,6 +591,12 @@ impl<'s> Layout<'s> {
         Tok::Word(Word::Retain)
     }
 
+    /// The text after byte `e` goes on with `:` (not `:=`), blanks skipped.
+    fn colon_follows(&self, e: usize) -> bool {
+        let rest = self.src[e..].trim_start_matches([' ', '\t']);
+        rest.starts_with(':') && !rest.starts_with(":=")
+    }
+
     fn convert(&self, raw: RawToken, s: usize, e: usize) -> Tok {
         match raw {
             RawToken::Word => {
@@ -609,6 +618,16 @@ impl<'s> Layout<'s> {
                     w if !w.is_name()
                         && !self.declared.is_empty()
                         && self.declared.iter().any(|d| d.eq_ignore_ascii_case(text)) =>
+                    {
+                        Tok::Word(Word::Ident)
+                    }
+                    // a structure's field named by a keyword (`Type : INT;` in a STRUCT, read
+                    // `r.Type`), as the ST reader takes it (B&R's library types use such names)
+                    w if !w.is_name()
+                        && (self.prev == Last::Dot
+                            || (self.decl_start
+                                && matches!(top, Some(Frame::Struct(..)))
+                                && self.colon_follows(e))) =>
                     {
                         Tok::Word(Word::Ident)
                     }
