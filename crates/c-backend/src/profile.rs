@@ -340,6 +340,23 @@ impl TargetProfile {
             .map(|(offset, bytes, ..)| offset + u64::from(bytes))
     }
 
+    /// The first built-in profile other than this one (by name) whose area holds `addr`, for
+    /// E2001's hint (an OpenPLC program's `%QW200` fits `--profile openplc`).
+    fn built_in_holding(
+        &self,
+        addr: &DirectAddress,
+        access_bytes: Option<u32>,
+    ) -> Option<&'static str> {
+        BUILT_IN_PROFILES.iter().find_map(|&(name, json)| {
+            if name.eq_ignore_ascii_case(&self.name) {
+                return None;
+            }
+            let p = Self::from_json(json).ok()?;
+            let (offset, bytes, ..) = p.byte_range(addr, access_bytes).ok()?;
+            (offset + u64::from(bytes) <= u64::from(p.image_size(addr.area))).then_some(name)
+        })
+    }
+
     /// Locates a direct address accessed with `access_bytes` bytes (the located variable's type size;
     /// `None`: the address's own size). Errors: E2002 (form), E2001 (outside the area), E2006 (alignment).
     pub fn locate(
@@ -375,9 +392,12 @@ impl TargetProfile {
                     offset + u64::from(bytes)
                 ))
                 .with_hint(format!(
-                    "use a smaller address, or a target profile (`--profile FILE.json`) whose `{}` is at least {}",
+                    "use a smaller address, or a target profile (`--profile FILE.json`) whose `{}` is at least {}{}",
                     area_field(addr.area),
-                    offset + u64::from(bytes)
+                    offset + u64::from(bytes),
+                    self.built_in_holding(addr, access_bytes)
+                        .map(|n| format!(" (the built-in `--profile {n}` has room for it)"))
+                        .unwrap_or_default()
                 )),
             ));
         }
