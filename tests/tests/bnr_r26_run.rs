@@ -18,7 +18,7 @@ use common::{check_text, column, in_dir, run_text, write_in};
 
 /// A library block `Pick` declared in a `.fun` file with inputs `Type`, `Configuration` and
 /// output `string`, implemented in a `.st` file, is called as `p(Type := 3, Configuration := 40)`
-/// and read as `p.Type`, `p.Configuration`, `p.string`; the stub `VendorCore` (inputs
+/// and read as `p.Type`, `p.Configuration`, `p.string` (and as `Type` in its own statements); the stub `VendorCore` (inputs
 /// `Configuration`, `type`) that no file implements is W0021 only.
 #[test]
 fn fun_parameters_named_with_keywords_are_declared_and_used() {
@@ -32,7 +32,7 @@ fn fun_parameters_named_with_keywords_are_declared_and_used() {
     write_in(
         root,
         "Libraries/KwLib/Pick.st",
-        "FUNCTION_BLOCK Pick\n\tDone := Enable;\nEND_FUNCTION_BLOCK\n",
+        "FUNCTION_BLOCK Pick\n\tDone := Enable AND Type = 3;\nEND_FUNCTION_BLOCK\n",
     );
     write_in(
         root,
