@@ -59,6 +59,11 @@ pub struct CompilationUnit {
     /// no integers (without it, W1439 converts between them).
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub strict_types: Vec<Ident>,
+    /// The places of the variables of declaration-only blocks (B&R's `.fun` files) named with a
+    /// keyword, an elementary type or a standard block (`Type`, `Configuration`, `string` of B&R's
+    /// own libraries): accepted as names, read only in `blk(Type := x)` and `blk.Type`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub keyword_parameters: Vec<Span>,
 }
 
 impl CompilationUnit {

@@ -355,8 +355,10 @@ pub fn share_private_types(units: &mut [CompilationUnit], map: &SourceMap) {
 /// A B&R program folder's actions file (`Actions.st`: `ACTION Name : ... END_ACTION`, no POU):
 /// its actions become those of the folder's `_INIT`, `_CYCLIC` and `_EXIT` parts (inlined where
 /// they call them, before [`join`] makes one program of the parts); so are those of an actions file
-/// in a package the program folder lists in its `IEC.prg` (`<Object Type="Package">`). A file of
-/// actions in a folder with no such part keeps its E1060 (reported by `lone_members::attach`).
+/// in a package the program folder lists in its `IEC.prg` (`<Object Type="Package">`). In a folder
+/// with no such part (a library's), the actions become those of the folder's function blocks
+/// whose statements call one of them by name (round 26). A file of actions that none of them
+/// takes keeps its E1060 (reported by `lone_members::attach`).
 pub fn attach_actions(
     units: &[CompilationUnit],
     pending: &mut Vec<il_frontend::st::file::PendingBody>,
@@ -401,6 +403,34 @@ pub fn attach_actions(
                 _ => break,
             }
         }
+        if taken.last().is_some_and(|(t, _)| *t == a) {
+            continue;
+        }
+        // a library folder's actions file: the actions of the folder's function blocks whose
+        // statements call them by name (`ACT_Drive;` in `Valve.st`, as Automation Studio's
+        // library lists them with the block's files; IEC 61131-3 ed. 3 6.7.2: an action belongs to
+        // a function block and works on its instance's variables); none calling: E1060 stays
+        let dir = folder(pb.file);
+        let names: Vec<String> = pb
+            .actions
+            .iter()
+            .map(|(n, ..)| n.name.to_ascii_lowercase())
+            .collect();
+        let blocks: Vec<usize> = pending
+            .iter()
+            .enumerate()
+            .filter(|(_, q)| {
+                q.lone.is_none()
+                    && !q.sfc
+                    && folder(q.file) == dir
+                    && is_function_block(units, q)
+                    && calls_any(&q.text, &names)
+            })
+            .map(|(k, _)| k)
+            .collect();
+        if !blocks.is_empty() {
+            taken.push((a, blocks));
+        }
     }
     for (a, parts) in taken.iter().rev() {
         let actions = pending[*a].actions.clone();
@@ -411,6 +441,27 @@ pub fn attach_actions(
     for (a, _) in taken.into_iter().rev() {
         pending.remove(a);
     }
+}
+
+/// Whether `body` is the statements of a FUNCTION_BLOCK.
+fn is_function_block(units: &[CompilationUnit], body: &il_frontend::st::file::PendingBody) -> bool {
+    units.iter().flat_map(|u| u.items.iter()).any(|i| {
+        matches!(i, LibraryElement::Pou(p)
+            if p.kind == PouKind::FunctionBlock
+                && p.name.span.file == body.file
+                && p.name.span.start as usize == body.name_start)
+    })
+}
+
+/// Whether statements `text` name one of `names` (lower case): a call of an action by its name.
+fn calls_any(text: &str, names: &[String]) -> bool {
+    use il_frontend::st::lexer::{lex, Tok};
+    lex(text).0.iter().any(|t| {
+        t.tok == Tok::Ident
+            && text
+                .get(t.range.clone())
+                .is_some_and(|w| names.iter().any(|n| w.eq_ignore_ascii_case(n)))
+    })
 }
 
 /// Whether folder `dir`'s `IEC.prg` (a program) or `.pkg` file (a package) lists its sub-folder

@@ -9,9 +9,11 @@
 //! `operator.fun` declares ADD, `standard.fun` TON) is not compiled, one note W0021 per file:
 //! ladderc's own blocks stand for the standard names, a use of another is reported where it is
 //! made. Invariants: only pairs of one kind, in two files, where exactly one has no statement (no
-//! IL instruction and an ST body without a token) are joined; every other duplicate stays the
-//! checks' E1002, but for `.fun` stubs of one name none of which has statements (all skipped); no declaration without statements becomes an empty block. Runs before the
-//! bodies are compiled, so the statements are lowered knowing the declarations.
+//! IL instruction and an ST body without a token) are joined, or where the one without statements
+//! is in a `.fun` file and the other, also without statements, is not (an implementation left
+//! empty); every other duplicate stays the checks' E1002, but for `.fun` stubs of one name none
+//! of which has statements (all skipped); no `.fun` declaration alone becomes an empty block. Runs
+//! before the bodies are compiled, so the statements are lowered knowing the declarations.
 
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
 use il_frontend::ast::{CompilationUnit, LibraryElement, PouKind};
@@ -49,9 +51,15 @@ pub fn join(
             continue;
         }
         let (ea, eb) = (no_statement(pa, pending), no_statement(pb, pending));
+        let (fa, fb) = (is_fun(pa.name.span.file), is_fun(pb.name.span.file));
         let (decl, imp) = match (ea, eb) {
             (true, false) => (a, b),
             (false, true) => (b, a),
+            // a `.fun` declaration and an implementation without statements in a `.st` file
+            // (Automation Studio's "Add function" writes one so; an empty statement list is a
+            // body, IEC 61131-3 ed. 3 7.3.1): one block, doing nothing (before round 26: E1002)
+            (true, true) if fa && !fb => (a, b),
+            (true, true) if fb && !fa => (b, a),
             _ => continue,
         };
         let Some(d) = pou(units, decl).cloned() else {

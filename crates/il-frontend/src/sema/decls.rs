@@ -812,7 +812,15 @@ impl Analyzer<'_> {
                 // a structure's field named with a keyword, an elementary type or a standard
                 // block (`Continue`, `Type`, `byte`, `tp`: B&R's and CODESYS's libraries) is read
                 // only after `.` (`s.tp`), where none of them can stand: accepted
-                if let Some(why) = reserved_name(&d.name.name).filter(|_| !self.declaring_fields) {
+                // as are the inputs and outputs of a B&R library block's `.fun` declaration
+                // (`Type`, `Configuration`, `string` of B&R's own libraries), read only as
+                // `blk(Type := x)` and `blk.Type`
+                let keyword_parameter = self
+                    .keyword_parameters
+                    .contains(&(d.name.span.file, d.name.span.start));
+                if let Some(why) = reserved_name(&d.name.name)
+                    .filter(|_| !self.declaring_fields && !keyword_parameter)
+                {
                     // reported once, at the declaration; the variable is kept so that its uses
                     // give no further errors
                     self.error(

@@ -64,6 +64,10 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         wide_chars_at: std::collections::HashSet::new(),
         reinterpreting_pous: std::collections::HashSet::new(),
         declaring_fields: false,
+        keyword_parameters: units
+            .iter()
+            .flat_map(|u| u.keyword_parameters.iter().map(|s| (s.file, s.start)))
+            .collect(),
         passing_any_address: false,
         counting_bit_string_pous: std::collections::HashSet::new(),
         integer_bits_pous: std::collections::HashSet::new(),
@@ -127,6 +131,9 @@ pub(crate) struct Analyzer<'d> {
     /// While set, [`Analyzer::declare_vars`] declares a structure's fields: a field may be named
     /// with a keyword (`Continue : BOOL;`, B&R and CODESYS before edition 3), read only after `.`.
     pub(crate) declaring_fields: bool,
+    /// The places (file, start) of the variables of declaration-only blocks (B&R's `.fun` files)
+    /// named with a keyword (`Type : USINT;`): accepted, as structure fields are.
+    pub(crate) keyword_parameters: std::collections::HashSet<(diagnostics::FileId, u32)>,
     /// The argument being checked is the hidden address of an ANY input (`In__PVALUE`,
     /// `crate::st::any_inputs`): a `POINTER TO BYTE` to any argument by design, no W1425.
     pub(crate) passing_any_address: bool,

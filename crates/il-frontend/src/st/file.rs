@@ -803,6 +803,7 @@ fn keyword_declarations(
     let mut in_decl = false;
     let mut in_struct = false;
     let mut fields = Vec::new();
+    let stubs = declaration_only_blocks(src, toks);
     let mut k = 0;
     while k < toks.len() {
         let t = &toks[k];
@@ -822,7 +823,10 @@ fn keyword_declarations(
                     "RETAIN" | "CONSTANT" | "NON_RETAIN" | "PERSISTENT" | "STRUCT"
                 )
                 || is_var_keyword(&word(src, &toks[k - 2]).to_ascii_uppercase()));
-        if in_struct && starts_decl && followed_by_colon && !w.starts_with("END_") {
+        // (in a block of declarations only, B&R's `.fun` file: `Type : USINT;` in its VAR_INPUT,
+        // as B&R's own libraries name inputs, read only as `blk(Type := x)` and `blk.Type`)
+        let in_stub = stubs.iter().any(|r| r.contains(&(k - 1)));
+        if (in_struct || in_stub) && starts_decl && followed_by_colon && !w.starts_with("END_") {
             let kind = crate::lexer::classify(&w);
             if kind != crate::lexer::Word::Ident && !kind.is_name() {
                 // a field named with a keyword: a name of the same length (no keyword starts
@@ -882,13 +886,74 @@ fn keyword_declarations(
     fields
 }
 
-/// Puts back the spelling of the structure fields named with a keyword (`Type : USINT;`) that
-/// [`keyword_declarations`] replaced by names of the same length for the parse.
+/// The token ranges (from `FUNCTION` or `FUNCTION_BLOCK` to its `END_`) of the blocks that hold
+/// declarations only, no statement: B&R's `.fun` files, which declare a library's blocks (their
+/// statements are in `.st` files, or in the B&R system for its own libraries).
+fn declaration_only_blocks(src: &str, toks: &[Token]) -> Vec<std::ops::Range<usize>> {
+    let upper = |k: usize| match toks.get(k) {
+        Some(t) if matches!(t.tok, Tok::Kw(_) | Tok::Ident) => word(src, t).to_ascii_uppercase(),
+        _ => String::new(),
+    };
+    let mut out = Vec::new();
+    let mut k = 0;
+    while k < toks.len() {
+        let w = upper(k);
+        let end_word = match w.as_str() {
+            "FUNCTION" => "END_FUNCTION",
+            "FUNCTION_BLOCK" => "END_FUNCTION_BLOCK",
+            _ => {
+                k += 1;
+                continue;
+            }
+        };
+        let start = k;
+        k += 1;
+        // the header (`FUNCTION F : INT`): names, `:` and keywords, up to the first VAR block
+        let mut header = true;
+        while k < toks.len() && !is_var_keyword(&upper(k)) && upper(k) != end_word {
+            if !matches!(toks[k].tok, Tok::Kw(_) | Tok::Ident | Tok::Colon) {
+                header = false;
+                break;
+            }
+            k += 1;
+        }
+        while header && is_var_keyword(&upper(k)) {
+            while k < toks.len() && upper(k) != "END_VAR" {
+                k += 1;
+            }
+            k += 1;
+        }
+        if header && upper(k) == end_word {
+            out.push(start..k + 1);
+        }
+        while k < toks.len() && upper(k) != end_word {
+            k += 1;
+        }
+        k += 1;
+    }
+    out
+}
+
+/// Puts back the spelling of the structure fields and of the declaration-only blocks' variables
+/// named with a keyword (`Type : USINT;`) that [`keyword_declarations`] replaced by names of the
+/// same length for the parse; the variables' places are kept in the unit's
+/// `keyword_parameters`, so that sema accepts their names.
 fn restore_field_names(unit: &mut CompilationUnit, fields: &[(usize, String)]) {
     if fields.is_empty() {
         return;
     }
+    let mut parameters = Vec::new();
     for item in &mut unit.items {
+        if let LibraryElement::Pou(p) = item {
+            for d in p.var_blocks.iter_mut().flat_map(|b| b.vars.iter_mut()) {
+                let at = d.name.span.start as usize;
+                if let Some((_, name)) = fields.iter().find(|(s, _)| *s == at) {
+                    d.name.name.clone_from(name);
+                    parameters.push(d.name.span);
+                }
+            }
+            continue;
+        }
         let LibraryElement::DataTypes(types) = item else {
             continue;
         };
@@ -903,13 +968,15 @@ fn restore_field_names(unit: &mut CompilationUnit, fields: &[(usize, String)]) {
             }
         }
     }
+    unit.keyword_parameters.extend(parameters);
 }
 
 /// Blanks B&R Automation Studio's zero initializer `:= (0)` of a declaration (`gAxis_HW :
 /// SdcHwCfg_typ := (0);`, `PID : MTBasicsPID := (0);` in its generated `.var` files): a structure,
 /// an instance or an array declared so starts as its type's initial value (no `:=` at all), as
 /// Automation Studio starts it with its members zero. Only inside `VAR ... END_VAR` and
-/// `STRUCT ... END_STRUCT`, and only before a `;` (`x := (0);` in a body is an assignment).
+/// `STRUCT ... END_STRUCT`, and only before a `;` (`x := (0);` in a body is an assignment). So
+/// is the `(0)` of a repeated array element, `9((0))`, which becomes `9(())` (round 26).
 fn zero_initializers(src: &str, toks: &[Token], text: &mut Option<String>) {
     let mut in_decl = false;
     for (k, t) in toks.iter().enumerate() {
@@ -919,6 +986,21 @@ fn zero_initializers(src: &str, toks: &[Token], text: &mut Option<String>) {
                 in_decl = true;
             } else if w == "END_VAR" || w == "END_STRUCT" {
                 in_decl = false;
+            }
+            continue;
+        }
+        // `9((0))` in an array's initial value (B&R's mapp types: `[(...),9((0))]`): nine elements
+        // of the type's initial value, `9(())`, as `(0)` alone means
+        if in_decl && matches!(t.tok, Tok::Int(_)) {
+            if let [l, l2, z, r, r2, ..] = &toks[k + 1..] {
+                if l.tok == Tok::LParen
+                    && l2.tok == Tok::LParen
+                    && z.tok == Tok::Int(0)
+                    && r.tok == Tok::RParen
+                    && r2.tok == Tok::RParen
+                {
+                    blank(text.get_or_insert_with(|| src.to_string()), z.range.clone());
+                }
             }
             continue;
         }
@@ -2264,6 +2346,12 @@ pub fn compile_pending(
             _ => None,
         })
         .collect();
+    // the variables of `.fun` declarations named with a keyword (`Type`), read only as
+    // `blk(Type := x)` and `blk.Type`: no reason not to compile the block's body
+    let keyword_parameters: std::collections::HashSet<(FileId, u32)> = units
+        .iter()
+        .flat_map(|u| u.keyword_parameters.iter().map(|s| (s.file, s.start)))
+        .collect();
     let declares_fb_init: std::collections::HashSet<String> = pending
         .iter()
         .filter(|pb| {
@@ -2369,11 +2457,10 @@ pub fn compile_pending(
                 // a variable named with a keyword (`IF : BOOL`) cannot be read in ST: sema
                 // reports it once at the declaration (E1031), and the body is not parsed into a
                 // cascade of syntax errors
-                let keyword_var = p
-                    .var_blocks
-                    .iter()
-                    .flat_map(|b| b.vars.iter())
-                    .any(|v| crate::sema::reserved_name(&v.name.name) == Some("a keyword"));
+                let keyword_var = p.var_blocks.iter().flat_map(|b| b.vars.iter()).any(|v| {
+                    crate::sema::reserved_name(&v.name.name) == Some("a keyword")
+                        && !keyword_parameters.contains(&(v.name.span.file, v.name.span.start))
+                });
                 // (a declaration the parser could not read, `OF : BOOL;`, is already E1031 there)
                 let dropped_keyword_var = diags.iter().any(|d| {
                     d.code == code::E1031

@@ -567,14 +567,47 @@ impl<'s, 'd> Parser<'s, 'd> {
     /// A statement list that stops also before a CASE label (`5:`, `1, 2:`, `3..4:`, `red:`).
     fn case_arm_body(&mut self) -> Vec<Stmt> {
         let mut out = Vec::new();
-        while !ends_list(self.peek()) && !self.looks_like_case_label() {
-            self.statement_into(&mut out);
+        loop {
+            while !ends_list(self.peek()) && !self.looks_like_case_label() {
+                self.statement_into(&mut out);
+            }
+            if !self.stray_closer_in_case() {
+                return out;
+            }
+            // one E0100 for a closer that closes nothing in the branch (`END_IF` once too often),
+            // skipped: the CASE goes on (before round 26: also E0105 "CASE is not closed" and an
+            // E0100 for the next label)
+            let t = self.describe_current();
+            self.error_here(
+                code::E0100,
+                format!("{t} without a matching opening statement"),
+                "remove it, or add the statement that it closes",
+            );
+            self.bump();
+            if self.at(&Tok::Semi) {
+                self.bump();
+            }
         }
-        out
+    }
+
+    /// Whether the current token closes a statement that is not open in a CASE branch (`END_IF`,
+    /// `END_FOR`, `END_WHILE`, `END_REPEAT`) and the CASE plainly goes on after it (a label or
+    /// `END_CASE` follows): a stray closer, not the end of an enclosing statement.
+    fn stray_closer_in_case(&self) -> bool {
+        use Kw::*;
+        if !matches!(self.peek(), Tok::Kw(EndIf | EndFor | EndWhile | EndRepeat)) {
+            return false;
+        }
+        let next = if *self.peek_at(1) == Tok::Semi { 2 } else { 1 };
+        matches!(self.peek_at(next), Tok::Kw(EndCase)) || self.looks_like_case_label_at(next)
     }
 
     fn looks_like_case_label(&self) -> bool {
-        let mut i = 0;
+        self.looks_like_case_label_at(0)
+    }
+
+    fn looks_like_case_label_at(&self, from: usize) -> bool {
+        let mut i = from;
         if matches!(self.peek_at(0), Tok::Minus | Tok::Plus) {
             i += 1;
         }
@@ -1612,7 +1645,11 @@ impl<'s, 'd> Parser<'s, 'd> {
             if negated {
                 self.bump();
             }
-            if self.at(&Tok::Ident) && matches!(self.peek_at(1), Tok::Assign | Tok::Arrow) {
+            // a keyword before `:=` or `=>` names a parameter (`blk(Type := 2)`: B&R's libraries
+            // name inputs so, Automation Studio reserving only the upper-case words)
+            if matches!(self.peek(), Tok::Ident | Tok::Kw(_))
+                && matches!(self.peek_at(1), Tok::Assign | Tok::Arrow)
+            {
                 let n = self.bump();
                 let name = self.ident(&n);
                 let out = self.bump().tok == Tok::Arrow;
