@@ -17,8 +17,10 @@
 //! the same way, the call becoming `CAL PLC_PRG(__ACTION_ACT := TRUE)` on the program's one
 //! instance (sema and the C backend resolve the program's name to it; a program that the
 //! configuration does not instantiate has one instance of its own, run only by such calls); when
-//! the program has several instances (a configuration that instantiates it twice), or calls itself
-//! by its name, the call is E3135.
+//! the program has several instances (a configuration that instantiates it twice) the call is
+//! E3135. Inside the program itself, `PLC_PRG.Act();` is its own call `Act();`, inlined before
+//! `link` runs (`st::lower::own_name`, [`drop_own_name`]); what reaches `link` so (an IL call with
+//! arguments, `CAL PLC_PRG.Act(x := 1)`) stays E3135.
 
 use crate::ast::{
     Accessor, Action, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt,
@@ -328,9 +330,16 @@ fn rewrite_calls(
             // the program has no instance or several, or calls itself by its name
             let key = a.pou.key();
             let why = match scope.instances.get(&key).map(Vec::as_slice) {
+                // (`Prog.Act();` inside Prog is `Act();`, inlined before: `drop_own_name`,
+                // `st::lower::own_name`; left here: an IL call with arguments)
                 _ if scope.caller == key => Some(format!(
-                    "`{}` calls its own action through its name",
-                    a.pou.name
+                    "`{}` {} its own action through its name",
+                    a.pou.name,
+                    if matches!(args, CallArgs::None) {
+                        "calls"
+                    } else {
+                        "passes arguments to"
+                    }
                 )),
                 // (a program in no resource has one instance of its own: `sema::program_calls`)
                 Some([_]) | None => None,
@@ -592,6 +601,46 @@ pub fn declares(p: &crate::ast::Pou) -> impl Fn(&str) -> bool {
         .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
         .collect();
     move |n: &str| vars.contains(&n.to_ascii_uppercase())
+}
+
+/// `CAL Prog.Act` (also `CALC`, `CALCN`) inside PROGRAM `Prog`, in its IL body or one of its
+/// actions, becomes `CAL Act`: the program's own action, which [`inline_calls`] then puts in
+/// place. CODESYS ("Object: Action") names an action `<program name>.<action name>`, the
+/// program's name optional inside the program: the same call (before issue #13's round 26:
+/// E3135). `actions` maps upper-case names to statements, as for [`inline_calls`]; `is_var`
+/// tells the names a variable holds (a variable named like the program keeps the call).
+pub fn drop_own_name(
+    body: &mut [IlStmt],
+    pou: &crate::ast::Pou,
+    actions: &HashMap<String, Vec<IlStmt>>,
+    is_var: &dyn Fn(&str) -> bool,
+) {
+    if pou.kind != PouKind::Program || is_var(&pou.name.name) {
+        return;
+    }
+    for s in body.iter_mut() {
+        let IlStmt::Instr(Instruction {
+            kind: InstrKind::Call { instance, args, .. },
+            ..
+        }) = s
+        else {
+            continue;
+        };
+        let own = match instance.accessors.as_slice() {
+            [Accessor::Field(act)] => {
+                instance.base.is(&pou.name.name)
+                    && actions.contains_key(&act.key())
+                    && matches!(args, CallArgs::None)
+            }
+            _ => false,
+        };
+        if own {
+            if let Some(Accessor::Field(act)) = instance.accessors.pop() {
+                instance.span = act.span;
+                instance.base = act;
+            }
+        }
+    }
 }
 
 /// Inlines the calls of a POU's own IL-level actions in `body` (an IL body, or an action's

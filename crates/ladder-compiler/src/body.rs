@@ -59,10 +59,12 @@ pub fn lower_pou_body(
     }
     let is_var = var_test(pou, index);
     let mut next = 0;
-    let mut inline = |ctx: &mut Ctx, stmts: Vec<IlStmt>| {
+    let mut inline = |ctx: &mut Ctx, mut stmts: Vec<IlStmt>| {
         if acts.il.is_empty() {
             return stmts;
         }
+        // `CAL Prog.Act` inside `Prog`: its own action (CODESYS)
+        il_frontend::actions::drop_own_name(&mut stmts, pou, &acts.il, &is_var);
         il_frontend::actions::inline_calls(stmts, &acts.il, &is_var, "__A", &mut next, ctx.diags)
     };
     match lang.name() {
@@ -335,7 +337,8 @@ fn lower_actions<'e, 'a>(
         .map(|(n, b)| (n.key(), b.clone()))
         .collect();
     let mut next = 0;
-    for (n, body) in raw {
+    for (n, mut body) in raw {
+        il_frontend::actions::drop_own_name(&mut body, pou, &raw_map, &is_var);
         let body = il_frontend::actions::inline_calls(
             body, &raw_map, &is_var, "__P", &mut next, ctx.diags,
         );

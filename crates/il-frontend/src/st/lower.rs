@@ -34,6 +34,7 @@ pub(super) mod method_flow;
 pub use method_flow::{method_call_expr, METHOD_CALL};
 pub(crate) mod method_in_out;
 mod mixed_args;
+mod own_name;
 mod short_circuit;
 
 /// What the hidden labels and temporaries of `pou`'s lowering start with: `_ST_`, but `_ST_INIT_`
@@ -343,7 +344,10 @@ impl<'d> PouLowering<'d> {
     pub fn statements(&mut self, stmts: &[Stmt], diags: &mut Diagnostics) -> Vec<IlStmt> {
         let mut out = Vec::new();
         self.types.get_mut().clear();
-        self.stmt_list(stmts, &mut out, diags);
+        // `Prog.Act();` inside `Prog`: `Act();` (own_name)
+        let stmts = self.own_names_dropped(stmts);
+        self.stmt_list(&stmts, &mut out, diags);
+        self.types.get_mut().clear();
         out
     }
 
@@ -569,7 +573,9 @@ impl<'d> PouLowering<'d> {
         let mut out = Vec::new();
         self.poisoned = false;
         self.types.get_mut().clear();
-        self.value(e, &mut out, diags);
+        let own = self.own_names_dropped_expr(e);
+        self.value(own.as_ref().unwrap_or(e), &mut out, diags);
+        self.types.get_mut().clear();
         out
     }
 
@@ -579,7 +585,9 @@ impl<'d> PouLowering<'d> {
         let mut out = Vec::new();
         self.poisoned = false;
         self.types.get_mut().clear();
-        self.cond_value(e, "condition", &mut out, diags);
+        let own = self.own_names_dropped_expr(e);
+        self.cond_value(own.as_ref().unwrap_or(e), "condition", &mut out, diags);
+        self.types.get_mut().clear();
         out
     }
 
@@ -992,6 +1000,7 @@ impl<'d> PouLowering<'d> {
                     match body {
                         ActionBody::St(body) => {
                             self.inlining.push(key);
+                            let body = self.own_names_dropped(&body);
                             self.stmt_list(&body, out, diags);
                             self.inlining.pop();
                         }

@@ -361,15 +361,27 @@ impl PouLowering<'_> {
     fn keep_earlier_results(&mut self, s: &mut Stmt, calls: &mut Vec<Stmt>) {
         let mut again = Vec::new();
         walk_stmt_exprs(s, &mut |e| collect_method_callees(e, &mut again));
+        // (a program's own method named through the program, `Prog.M(1) + Prog.M(2)`: the
+        // parser hoisted the first call and reads `__M_M`, the second is `M(2)`, see own_name)
+        if self.kind == PouKind::Program {
+            walk_stmt_exprs(s, &mut |e| {
+                each_expr(e, &mut |x| {
+                    if let ExprKind::Call { name, .. } = &x.kind {
+                        if self.is_method(name) && !again.contains(&name.key()) {
+                            again.push(name.key());
+                        }
+                    }
+                })
+            });
+        }
         for key in again {
-            let (prefix, method) = match key.rsplit_once('.') {
-                Some(x) => x,
-                None => continue,
+            let result_key = match key.rsplit_once('.') {
+                Some((prefix, method)) => format!(
+                    "{prefix}.{}",
+                    crate::actions::method_result(method).to_ascii_uppercase()
+                ),
+                None => crate::actions::method_result(&key),
             };
-            let result_key = format!(
-                "{prefix}.{}",
-                crate::actions::method_result(method).to_ascii_uppercase()
-            );
             let mut found: Option<Place> = None;
             walk_stmt_exprs(s, &mut |e| find_place(e, &result_key, &mut found));
             let Some(read) = found else {
