@@ -625,14 +625,14 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
                 || (t.is_duration() && plain(f))
                 || (f.is_date()
                     && t.is_date()
-                    && (f.date_kind() == t.date_kind()
-                        || f.date_kind() == Some(E::Dt)
-                        // CODESYS's DATE_TO_DT (its table 17): the date at midnight
-                        || (f.date_kind(), t.date_kind()) == (Some(E::Date), Some(E::Dt))))
-                // CODESYS's TOD_TO_TIME and TIME_TO_TOD (tables 16 and 17): both count
-                // milliseconds, a duration to a time of day keeps the time of day
-                || (f.date_kind() == Some(E::Tod) && t.is_duration())
-                || (f.is_duration() && t.date_kind() == Some(E::Tod))
+                    && (f.date_kind() == t.date_kind() || f.date_kind() == Some(E::Dt)))
+                // CODESYS's DATE_TO_DT (its table 17: the date at midnight), TOD_TO_TIME and
+                // TIME_TO_TOD (tables 16 and 17: both count milliseconds, a duration to a time of
+                // day keeps the time of day); the edition-2 types only, as CODESYS lists them
+                || matches!(
+                    (f, t),
+                    (E::Date, E::Dt) | (E::Tod, E::Time) | (E::Time, E::Tod)
+                )
                 || (f.is_date() && plain(t))
                 || (t.is_date() && plain(f))
                 || (f == t)
