@@ -7,7 +7,8 @@
 //! 0; TRUNC truncates toward zero and saturates; integers wrap to the target width; TIME and TOD
 //! convert from and to milliseconds, DT and DATE seconds, edition 3's LDT, LDATE and LTOD
 //! nanoseconds (a number to DATE keeps the day, to TOD the time of day; DT and LDT convert to the
-//! date and the time of day of either length); LREAL to REAL rounds to nearest and overflows to an
+//! date and the time of day of either length; CODESYS's DATE_TO_DT is the date at midnight,
+//! TOD_TO_TIME the duration since midnight, TIME_TO_TOD the duration's time of day); LREAL to REAL rounds to nearest and overflows to an
 //! infinity.
 
 mod common;
@@ -464,6 +465,9 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
             if is_time(from) {
                 if is_time(to) {
                     Want::Ns(*ns)
+                } else if is_date(to) {
+                    // TIME_TO_TOD (CODESYS): the time of day of the duration
+                    Want::Text(date_text(to, ns.rem_euclid(86_400_000_000_000)))
                 } else if is_real(to) {
                     real_of(to, *ns as f64 / 1e6)
                 } else {
@@ -471,6 +475,9 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
                 }
             } else if to == "BOOL" {
                 Want::Text(((*ns != 0) as u8).to_string())
+            } else if is_time(to) {
+                // TOD_TO_TIME (CODESYS): the duration since midnight
+                Want::Ns(*ns)
             } else if is_real(to) {
                 real_of(to, *ns as f64 / date_unit(from) as f64)
             } else if !is_date(to) {

@@ -22,7 +22,7 @@
 //!   way the grammar builds the same statements and diagnostics as of the tokens one by one.
 
 use crate::ast::Condition;
-use crate::lexer::{LexError, LineTok, RawToken, Tok, Word};
+use crate::lexer::{LexError, LineTok, RawToken, TimeValue, Tok, Word};
 use diagnostics::{code, Diagnostic, FileId, Span};
 use logos::Logos;
 use std::collections::VecDeque;
@@ -747,6 +747,19 @@ impl<'s> Layout<'s> {
                             self.decl_parens = 0;
                         }
                         _ => {}
+                    }
+                    if matches!(
+                        raw,
+                        RawToken::Prefixed(Some(
+                            TimeValue::TimeOfDay(..) | TimeValue::DateAndTime(..)
+                        ))
+                    ) && crate::literal::lacks_seconds(&self.src[s..e])
+                    {
+                        let d = crate::st::lexer::no_seconds_diagnostic(
+                            self.span(s, e),
+                            &self.src[s..e],
+                        );
+                        self.diags.push(d);
                     }
                     if matches!(raw, RawToken::Word)
                         && self.var_head

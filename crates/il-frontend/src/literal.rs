@@ -224,15 +224,16 @@ pub fn date(text: &str) -> Result<i64, Invalid> {
     Ok(days_from_civil(y, m, d))
 }
 
-/// `11:36:15.20` as nanoseconds since midnight.
+/// `11:36:15.20` as nanoseconds since midnight. `11:36` (no seconds, as CODESYS writes and
+/// accepts it: `TOD#12:00`) is 11:36:00; the callers warn about it (W1445, see [`lacks_seconds`]).
 pub fn time_of_day(text: &str) -> Result<i64, Invalid> {
     let bad = || format!("`{text}` is not a valid time of day (write TOD#hh:mm:ss.ff)");
     let mut parts = text.split(':');
-    let (Some(h), Some(m), Some(s), None) =
-        (parts.next(), parts.next(), parts.next(), parts.next())
+    let (Some(h), Some(m), s, None) = (parts.next(), parts.next(), parts.next(), parts.next())
     else {
         return Err(bad());
     };
+    let s = s.unwrap_or("0");
     let h = small_number(h).ok_or_else(bad)?;
     let m = small_number(m).ok_or_else(bad)?;
     let (sec, frac) = number_parts(s).ok_or_else(bad)?;
@@ -255,6 +256,16 @@ pub fn date_and_time(text: &str) -> Result<i128, Invalid> {
     let days = date(&text[..cut]).map_err(|_| bad())?;
     let tod = time_of_day(&text[cut + 1..]).map_err(|_| bad())?;
     Ok(days as i128 * NS_PER_DAY + tod as i128)
+}
+
+/// A time-of-day or date-and-time literal's text (`TOD#12:00`, `DT#1970-1-1-00:00`, with or without
+/// its prefix) whose time has hours and minutes but no seconds: IEC 61131-3's grammar
+/// (`daytime ::= day_hour ':' day_minute ':' day_second`) requires the seconds, CODESYS accepts the
+/// literal without them (its own exports and OSCAT write `TOD#12:00`), read as `:00` with W1445.
+pub fn lacks_seconds(text: &str) -> bool {
+    let body = text.rsplit_once('#').map_or(text, |(_, b)| b).trim();
+    let time = body.rsplit('-').next().unwrap_or(body);
+    time.matches(':').count() == 1
 }
 
 /// Decodes the `$` escapes of a string body (without quotes). `wide` (`"..."`) takes `$hhhh`, a
@@ -378,6 +389,14 @@ mod tests {
             Ok((11 * 3600 + 36 * 60 + 15) * 1_000_000_000 + 200_000_000_i64)
         );
         assert!(time_of_day("24:00:00").is_err());
+        assert_eq!(time_of_day("9:0"), Ok(9 * 3600 * 1_000_000_000));
+        assert!(time_of_day("9").is_err());
+        assert!(time_of_day("9:60").is_err());
+        assert_eq!(date_and_time("1970-1-1-00:00"), Ok(0));
+        assert!(lacks_seconds("TOD#12:00"));
+        assert!(lacks_seconds("DT#1970-1-1-00:00"));
+        assert!(!lacks_seconds("TOD#12:00:00"));
+        assert!(!lacks_seconds("DT#1970-1-1-00:00:00"));
         assert_eq!(
             date_and_time("2001-04-09-11:36:15.20"),
             Ok(11_421 * NS_PER_DAY + (41_775 * NS_PER_S + 200_000_000))

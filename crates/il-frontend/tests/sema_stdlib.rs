@@ -129,7 +129,11 @@ fn every_conversion_between_elementary_types_is_callable() {
     // Some conversions do not exist.
     assert!(stdlib::conversion("DATE_TO_TIME").is_none());
     assert!(stdlib::conversion("DATE_TO_UDINT").is_some());
-    assert!(stdlib::conversion("TIME_TO_TOD").is_none());
+    // CODESYS's TIME_TO_TOD, TOD_TO_TIME and DATE_TO_DT exist (round 26), TOD_TO_DATE does not
+    assert!(stdlib::conversion("TIME_TO_TOD").is_some());
+    assert!(stdlib::conversion("TOD_TO_TIME").is_some());
+    assert!(stdlib::conversion("DATE_TO_DT").is_some());
+    assert!(stdlib::conversion("TOD_TO_DATE").is_none());
     assert!(stdlib::conversion("FOO_TO_INT").is_none());
     assert!(stdlib::conversion("INT_TO_STRING").is_some());
     assert!(stdlib::conversion("TRUNC").is_some());

@@ -309,7 +309,22 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
                 }
             }
             match values::operand(text, span) {
-                Some(op) => Some(Initializer::Value(op)),
+                Some(op) => {
+                    if let il_frontend::ast::Operand::Literal(l) = &op {
+                        if matches!(
+                            l.kind,
+                            il_frontend::ast::LiteralKind::TimeOfDay(_)
+                                | il_frontend::ast::LiteralKind::DateAndTime(_)
+                        ) && il_frontend::literal::lacks_seconds(text)
+                        {
+                            ctx.report(il_frontend::st::lexer::no_seconds_diagnostic(
+                                span,
+                                text.trim(),
+                            ));
+                        }
+                    }
+                    Some(Initializer::Value(op))
+                }
                 None => {
                     ctx.error(
                         code::E3011,

@@ -642,8 +642,14 @@ fn date(t: &str) -> Option<i64> {
     Some(era * 146_097 + doe - 719_468)
 }
 
+/// `hh:mm:ss.ff`, or `hh:mm` without seconds as CODESYS writes it (`TIME_OF_DAY#3:0`; the
+/// caller warns W1445).
 fn time_of_day(t: &str) -> Option<i64> {
-    let d = clock_duration(t)?;
+    let d = if t.matches(':').count() == 1 {
+        clock_duration(&format!("{t}:0"))?
+    } else {
+        clock_duration(t)?
+    };
     i64::try_from(d).ok()
 }
 

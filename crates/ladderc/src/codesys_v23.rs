@@ -29,6 +29,9 @@ const SECTIONS: &[(&str, &str, &str)] = &[
     ("_WORKSPACE", "_END_WORKSPACE", "the workspace options"),
     ("LIBRARY", "END_LIBRARY", "a library reference"),
     ("RESOURCE", "END_RESOURCE", "the task configuration"),
+    // a macro (menu name and batch commands, `MacroCmd: 'project build'`), exported by "Export
+    // multiple" beside the POUs
+    ("MACRO", "END_MACRO", "a macro"),
 ];
 
 /// The first word of a line (the line trimmed), and the rest.
@@ -97,8 +100,9 @@ pub fn read(file: FileId, text: &str) -> Option<Export> {
             k += 1;
             continue;
         };
-        // `RESOURCE` and `LIBRARY` alone on their line (IEC 61131-3's RESOURCE has a name)
-        if (w == "RESOURCE" || w == "LIBRARY") && !rest.trim().is_empty() {
+        // `RESOURCE`, `LIBRARY` and `MACRO` alone on their line (IEC 61131-3's RESOURCE has a
+        // name; a variable named `macro` is no section)
+        if matches!(w, "RESOURCE" | "LIBRARY" | "MACRO") && !rest.trim().is_empty() {
             k += 1;
             continue;
         }
@@ -120,8 +124,20 @@ pub fn read(file: FileId, text: &str) -> Option<Export> {
                 .split_whitespace()
                 .next()
                 .filter(|n| w == "VISUALISATION" && !n.is_empty());
+            // `MacroName: 'BuildAll'`: the macro's name
+            let macro_name = (w == "MACRO")
+                .then(|| {
+                    ls[k + 1..j.min(ls.len())].iter().find_map(|(_, l)| {
+                        let v = l.trim().strip_prefix("MacroName:")?.trim();
+                        Some(v.trim_matches('\'').to_string())
+                    })
+                })
+                .flatten();
             let shown = match name {
                 Some(n) => format!("{what} (`{n}`)"),
+                None if macro_name.is_some() => {
+                    format!("{what} (`{}`)", macro_name.unwrap_or_default())
+                }
                 None if w == "LIBRARY" => {
                     let lib = ls
                         .get(k + 1)

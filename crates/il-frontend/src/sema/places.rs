@@ -1354,6 +1354,17 @@ pub(super) fn path_text(v: &VarRef, upto: usize) -> String {
 /// A hint for a type mismatch: the conversion function to use where there is one.
 pub(super) fn conversion_hint(from: &str, to: &str) -> String {
     let plain = |s: &str| s.chars().all(|c| c.is_ascii_uppercase() || c == '_');
+    // `dwAdr := ADR(w)` into a DWORD (CODESYS V2.3's ADR gives a DWORD): an address kept in an
+    // integer is refused by design, as it would lose the bounds every pointer carries here
+    if let Some(target) = from.strip_prefix("REF_TO ") {
+        let integer = super::model::Elementary::from_name(to)
+            .is_some_and(|e| e.is_integer() || (e.is_bit() && e != super::model::Elementary::Bool));
+        if integer {
+            return format!(
+                "ladderc keeps an address only in a pointer, never in an integer such as {to} (a pointer here is bounded by the variable it points into); declare it `POINTER TO {target}` and read the value through `^`"
+            );
+        }
+    }
     if plain(from) && plain(to) && super::stdlib::conversion(&format!("{from}_TO_{to}")).is_some() {
         format!("convert explicitly with {from}_TO_{to}")
     } else {

@@ -608,7 +608,8 @@ fn conv_type(name: &str) -> Option<Type> {
 /// DATE and TOD; DT, DATE and TOD convert with numbers and bit strings (CODESYS, TwinCAT, matiec,
 /// OSCAT: DT and DATE as seconds since 1970-01-01, TOD as milliseconds since midnight; edition 3's
 /// LDT, LDATE and LTOD as nanoseconds); a date type converts to its long or short form (`DT_TO_LDT`,
-/// `LTOD_TO_TOD`), and DT and LDT to the date and the time of day of either length;
+/// `LTOD_TO_TOD`), DT and LDT to the date and the time of day of either length, DATE to DT (the date
+/// at midnight) and TOD to TIME and back (CODESYS's `DATE_TO_DT`, `TOD_TO_TIME`, `TIME_TO_TOD`);
 /// everything elementary converts to and from STRING/WSTRING.
 pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
     let (f, t) = (from.elementary(), to.elementary());
@@ -625,6 +626,13 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
                 || (f.is_date()
                     && t.is_date()
                     && (f.date_kind() == t.date_kind() || f.date_kind() == Some(E::Dt)))
+                // CODESYS's DATE_TO_DT (its table 17: the date at midnight), TOD_TO_TIME and
+                // TIME_TO_TOD (tables 16 and 17: both count milliseconds, a duration to a time of
+                // day keeps the time of day); the edition-2 types only, as CODESYS lists them
+                || matches!(
+                    (f, t),
+                    (E::Date, E::Dt) | (E::Tod, E::Time) | (E::Time, E::Tod)
+                )
                 || (f.is_date() && plain(t))
                 || (t.is_date() && plain(f))
                 || (f == t)

@@ -337,6 +337,9 @@ pub enum Problem {
     /// and STruCpp read it, where IEC 61131-3 writes `$'` (`$"` in a WSTRING). The range is the two
     /// quotes; the literals are read as one string holding the quote, so nothing else follows.
     DoubledQuote(Range<usize>),
+    /// A time-of-day or date-and-time literal without seconds (`TOD#12:00`): read as `:00`, as
+    /// CODESYS reads it; warning W1445 (IEC 61131-3 requires the seconds).
+    NoSeconds(Range<usize>),
 }
 
 /// Lexes `src`; the token list always ends with [`Tok::Eof`].
@@ -351,7 +354,14 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
                 Some(k) => Tok::Kw(k),
                 None => Tok::Ident,
             },
-            Ok(Raw::Prefixed(Some(t))) => Tok::Time(t),
+            Ok(Raw::Prefixed(Some(t))) => {
+                if matches!(t, TimeValue::TimeOfDay(..) | TimeValue::DateAndTime(..))
+                    && literal::lacks_seconds(&src[range.clone()])
+                {
+                    problems.push(Problem::NoSeconds(range.clone()));
+                }
+                Tok::Time(t)
+            }
             Ok(Raw::Prefixed(None)) => Tok::TypePrefix,
             Ok(Raw::Int(v)) => Tok::Int(v),
             Ok(Raw::Real(v)) => Tok::Real(v),
@@ -727,6 +737,18 @@ pub fn flat_comment_diagnostic(whole: crate::Span) -> diagnostics::Diagnostic {
     .with_primary_label("comment opened here")
     .with_label(close, "closed here (what follows is compiled)")
     .with_hint("IEC 61131-3 edition 2 and matiec end a comment at its first `*)`, edition 3 may nest comments; close each `(*` with its own `*)` if the text after this `*)` belongs to the comment")
+}
+
+/// W1445 for a time-of-day or date-and-time literal without seconds (`TOD#12:00`) at `span`: the
+/// same warning in ST, IL and PLCopen XML initial values.
+pub fn no_seconds_diagnostic(span: crate::Span, text: &str) -> diagnostics::Diagnostic {
+    use diagnostics::{code, Diagnostic};
+    Diagnostic::warning(
+        code::W1445,
+        format!("`{text}` has no seconds: read as `:00`, as CODESYS reads it"),
+    )
+    .at(span)
+    .with_hint("IEC 61131-3 requires the seconds (`TOD#12:00:00`, `DT#1970-01-01-00:00:00`); add `:00` to silence this warning")
 }
 
 /// A pragma's text on one line, at most 60 characters (cut at a character boundary).

@@ -222,6 +222,13 @@ impl<'s, 'd> Parser<'s, 'd> {
                 }
                 return;
             }
+            Problem::NoSeconds(r) => {
+                let span = self.span(r.start, r.end);
+                let text = self.src[r].to_string();
+                self.diags
+                    .push(super::lexer::no_seconds_diagnostic(span, &text));
+                return;
+            }
             Problem::FlatComment(r) => {
                 let whole = self.span(r.start, r.end);
                 self.diags

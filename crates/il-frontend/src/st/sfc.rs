@@ -228,6 +228,64 @@ impl Reader<'_> {
         }
         out
     }
+    /// Whether the step body from the current token up to `END_STEP` holds statements (a CODESYS
+    /// V2.3 step's embedded action: `STEP s: n := n + 1; END_STEP`) rather than action
+    /// associations (`act(N); flag(S);`). Statements: anything that is not `name [(args)] [;]`, or
+    /// `(args)` holding `:=` / `=>` (a call's parameters). In a V2.3 export (`v23`) an element is an
+    /// association only with a qualifier as its first argument (`fb();` is a call there).
+    fn step_holds_code(&self, v23: bool) -> bool {
+        let last = self.toks.len() - 1;
+        let tok = |j: usize| &self.toks[j.min(last)];
+        let mut j = self.i;
+        loop {
+            let t = tok(j);
+            if t.tok == Tok::Eof || word_is(self.text, t, "END_STEP") {
+                return false;
+            }
+            if t.tok != Tok::Ident {
+                return true;
+            }
+            j += 1;
+            let mut qualified = false;
+            if tok(j).tok == Tok::LParen {
+                j += 1;
+                let first = j;
+                let mut first_end: Option<usize> = None;
+                let mut depth = 0usize;
+                loop {
+                    match tok(j).tok {
+                        Tok::Eof => return false,
+                        Tok::Assign | Tok::Arrow => return true,
+                        Tok::LParen => depth += 1,
+                        Tok::RParen if depth == 0 => break,
+                        Tok::RParen => depth -= 1,
+                        Tok::Comma if depth == 0 => {
+                            first_end.get_or_insert(j);
+                        }
+                        _ => {}
+                    }
+                    j += 1;
+                }
+                let end = first_end.unwrap_or(j);
+                if end > first {
+                    let from = tok(first).range.start;
+                    let to = tok(end - 1).range.end;
+                    let q = self.text.get(from..to).unwrap_or("").trim();
+                    qualified = is_qualifier(&q.to_ascii_uppercase());
+                }
+                j += 1;
+            }
+            if v23 && !qualified {
+                return true;
+            }
+            match tok(j).tok {
+                Tok::Semi => j += 1,
+                Tok::Ident | Tok::Eof => {}
+                _ if word_is(self.text, tok(j), "END_STEP") => {}
+                _ => return true,
+            }
+        }
+    }
     fn association(&mut self) -> Option<TextAssociation> {
         let (action, name_range) = self.name("an action name or `END_STEP`")?;
         let mut a = TextAssociation {
@@ -338,6 +396,9 @@ pub fn read(file: FileId, src: &str, body: Range<usize>) -> (TextChart, Vec<Diag
         diags: Vec::new(),
     };
     let mut chart = TextChart::default();
+    // a CODESYS V2.3 export (its `(* @SFCMAXTIME := '' *)` after every step, its
+    // `(* @END_DECLARATION := '0' *)`): a step's body is its embedded action's statements
+    let v23 = text.contains("@SFCMAXTIME") || src.contains("@END_DECLARATION");
     // (transition, names) resolved once every step is known
     let mut pending: Vec<(Vec<Named>, Vec<Named>)> = Vec::new();
     while !r.at_eof() {
@@ -352,6 +413,31 @@ pub fn read(file: FileId, src: &str, body: Range<usize>) -> (TextChart, Vec<Diag
                 r.bump();
             }
             let mut associations = Vec::new();
+            if r.step_holds_code(v23) {
+                // the step's embedded action (CODESYS V2.3): an action named as the step, run
+                // while the step is active, as CODESYS runs a step action (`__ACTIVE`)
+                let code = r.skip_to("END_STEP");
+                chart.actions.push(TextAction {
+                    name: name.clone(),
+                    name_range: name_range.clone(),
+                    body: code,
+                });
+                associations.push(TextAssociation {
+                    action: name.clone(),
+                    range: name_range.clone(),
+                    qualifier: "__ACTIVE".into(),
+                    qualifier_range: name_range.clone(),
+                    time: None,
+                    indicators: Vec::new(),
+                });
+                chart.steps.push(TextStep {
+                    name,
+                    name_range,
+                    initial,
+                    associations,
+                });
+                continue;
+            }
             while !r.at_eof() && !r.is("END_STEP") {
                 match r.association() {
                     Some(a) => associations.push(a),
