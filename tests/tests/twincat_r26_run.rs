@@ -4,10 +4,14 @@
 //!   with the flags TwinCAT saves with it, the project's settings copied into the POU (before:
 //!   E0321, its message broken by runs of 18 blanks);
 //! - `Axis();`, a call of a Tc2_MC2 `AXIS_REF` (a function block there), refreshes the axis's
-//!   status as `Axis.ReadStatus()` does (before: E1018 "`Axis` is AXIS_REF, not an FB instance").
+//!   status as `Axis.ReadStatus()` does (before: E1018 "`Axis` is AXIS_REF, not an FB instance");
+//! - `Configuration` and `Resource` name variables of TwinCAT objects, with W1418 as `ON` does
+//!   (before: E1031; TwinCAT has no textual configuration and does not reserve them);
+//! - a `--lib` library's own `PROGRAM MAIN` (every library made from TwinCAT's template keeps one)
+//!   is shadowed by the application's `MAIN` (before: E1002 "`MAIN` is declared twice").
 
 mod common;
-use common::{ladderc, run_traced_files};
+use common::{check_text, column, in_dir, ladderc, run_traced_files, write_in};
 use std::path::Path;
 
 /// `ladderc run` of `file` for `cycles` scans of 10 ms with `stimulus`, watching `watch`: the
@@ -58,8 +62,8 @@ fn an_sfc_pou_whose_settings_use_the_defaults_runs_with_the_flags_saved_with_it(
     let stimulus = "2,MAIN.bStart,1\n3,MAIN.bStart,0\n5,MAIN.SFCReset,1\n6,MAIN.SFCReset,0\n";
     let with_defaults = run(&defaults, 10, stimulus, watch);
     assert_eq!(with_defaults, run(&fixture, 10, stimulus, watch));
-    let fill = common::column(&with_defaults, "MAIN.__sfc_X_Fill");
-    let idle = common::column(&with_defaults, "MAIN.__sfc_X_Idle");
+    let fill = column(&with_defaults, "MAIN.__sfc_X_Fill");
+    let idle = column(&with_defaults, "MAIN.__sfc_X_Idle");
     // bStart enters Fill; SFCReset (a flag the saved settings enable) brings the chart back to Idle
     assert_eq!(fill[2], 1.0, "{with_defaults}");
     assert_eq!((idle[5], fill[5]), (1.0, 0.0), "{with_defaults}");
@@ -94,7 +98,156 @@ fn a_call_of_an_axis_ref_refreshes_its_status_as_read_status_does() {
         traces.push(trace);
     }
     assert_eq!(traces[0], traces[1]);
-    let moving = common::column(&traces[0], "MAIN.bMoving");
-    let still = common::column(&traces[0], "MAIN.bStill");
+    let moving = column(&traces[0], "MAIN.bMoving");
+    let still = column(&traces[0], "MAIN.bStill");
     assert!(moving.contains(&1.0) && still[29] == 1.0, "{}", traces[0]);
+}
+
+/// A TwinCAT object holding one POU: `kind` `POU`, `DUT` ..., its declaration and ST body.
+fn tc_pou(name: &str, declaration: &str, body: &str) -> String {
+    format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"3.1.4024.12\">\n\
+         \x20 <POU Name=\"{name}\" Id=\"{{00000000-0000-0000-0000-000000000001}}\" SpecialFunc=\"None\">\n\
+         \x20   <Declaration><![CDATA[{declaration}]]></Declaration>\n\
+         \x20   <Implementation>\n      <ST><![CDATA[{body}]]></ST>\n    </Implementation>\n\
+         \x20 </POU>\n</TcPlcObject>\n"
+    )
+}
+
+/// A function block whose inputs are named `Configuration` and `Resource` (a real project's
+/// `Configuration : ST_ConveyorConfig`): called with them as formal parameters, read in its body,
+/// one W1418 at each declaration; in a plain `.st` file the name stays E1031.
+#[test]
+fn configuration_and_resource_name_variables_of_twincat_objects() {
+    let dir = tempfile::tempdir().unwrap();
+    write_in(
+        dir.path(),
+        "FB_Sum.TcPOU",
+        &tc_pou(
+            "FB_Sum",
+            "FUNCTION_BLOCK FB_Sum\nVAR_INPUT\n  Configuration : INT;\n  Resource : INT;\nEND_VAR\nVAR_OUTPUT\n  total : INT;\nEND_VAR\n",
+            "total := Configuration * 10 + Resource;",
+        ),
+    );
+    write_in(
+        dir.path(),
+        "MAIN.TcPOU",
+        &tc_pou(
+            "MAIN",
+            "PROGRAM MAIN\nVAR\n  s : FB_Sum;\n  r : INT;\nEND_VAR\n",
+            "s(Configuration := 4, Resource := 2);\nr := s.total;",
+        ),
+    );
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "FB_Sum.TcPOU",
+            "MAIN.TcPOU",
+            "--cycles",
+            "2",
+            "--trace",
+            "-",
+            "--watch",
+            "MAIN.r",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(column(&stdout, "MAIN.r"), vec![42.0, 42.0], "{stdout}");
+    let w1418: Vec<&str> = stderr.lines().filter(|l| l.contains("W1418")).collect();
+    assert_eq!(w1418.len(), 2, "{stderr}");
+    assert!(
+        w1418[0].contains("FB_Sum.TcPOU:6:3") && w1418[0].contains("`Configuration`"),
+        "{stderr}"
+    );
+    assert!(
+        w1418[1].contains("FB_Sum.TcPOU:7:3") && w1418[1].contains("`Resource`"),
+        "{stderr}"
+    );
+    let (code, diags) = check_text(
+        "plain.st",
+        "PROGRAM Main\nVAR\n  Resource : INT;\nEND_VAR\nResource := 1;\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1));
+    assert_eq!(diags.len(), 1, "{diags:?}");
+    assert!(diags[0].contains("E1031"), "{diags:?}");
+}
+
+/// An application and a `--lib` library project that both have a `PROGRAM MAIN` (the library's is
+/// the empty one of TwinCAT's template): the application's runs, the library's block is used.
+#[test]
+fn a_library_program_is_shadowed_by_the_application_pou_of_its_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let project = |name: &str, files: &[&str], reference: &str| {
+        let compile: String = files
+            .iter()
+            .map(|f| {
+                format!("    <Compile Include=\"POUs\\{f}\"><SubType>Code</SubType></Compile>\n")
+            })
+            .collect();
+        format!(
+            "<Project DefaultTargets=\"Build\" xmlns=\"http://schemas.microsoft.com/developer/msbuild/2003\">\n\
+             \x20 <PropertyGroup>\n    <Name>{name}</Name>\n    <Title>{name}</Title>\n  </PropertyGroup>\n\
+             \x20 <ItemGroup>\n{compile}  </ItemGroup>\n  <ItemGroup>\n{reference}  </ItemGroup>\n</Project>\n"
+        )
+    };
+    write_in(
+        dir.path(),
+        "Lib/Halves.plcproj",
+        &project("Halves", &["FB_Half.TcPOU", "MAIN.TcPOU"], ""),
+    );
+    write_in(
+        dir.path(),
+        "Lib/POUs/FB_Half.TcPOU",
+        &tc_pou(
+            "FB_Half",
+            "FUNCTION_BLOCK FB_Half\nVAR_INPUT i : INT; END_VAR\nVAR_OUTPUT o : INT; END_VAR\n",
+            "o := i / 2;",
+        ),
+    );
+    write_in(
+        dir.path(),
+        "Lib/POUs/MAIN.TcPOU",
+        &tc_pou(
+            "MAIN",
+            "PROGRAM MAIN\nVAR\n  unused : INT;\nEND_VAR\n",
+            "unused := 1;",
+        ),
+    );
+    write_in(
+        dir.path(),
+        "App/App.plcproj",
+        &project(
+            "App",
+            &["MAIN.TcPOU"],
+            "    <PlaceholderReference Include=\"Halves\">\n      <DefaultResolution>Halves, * (Me)</DefaultResolution>\n      <Namespace>Halves</Namespace>\n    </PlaceholderReference>\n",
+        ),
+    );
+    write_in(
+        dir.path(),
+        "App/POUs/MAIN.TcPOU",
+        &tc_pou(
+            "MAIN",
+            "PROGRAM MAIN\nVAR\n  h : FB_Half;\n  r : INT;\nEND_VAR\n",
+            "h(i := 84);\nr := h.o;",
+        ),
+    );
+    let (code, stdout, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "App/App.plcproj",
+            "--lib",
+            "Lib/Halves.plcproj",
+            "--cycles",
+            "1",
+            "--trace",
+            "-",
+            "--watch",
+            "MAIN.r",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(column(&stdout, "MAIN.r"), vec![42.0], "{stdout}");
+    assert!(!stdout.contains("unused"), "{stdout}");
 }
