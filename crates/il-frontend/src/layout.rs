@@ -383,7 +383,9 @@ impl<'s> Layout<'s> {
                         self.stack.pop();
                     }
                 }
-                Word::Configuration => {
+                // a variable named `Configuration` (TwinCAT, W1418; elsewhere E1031 in sema) is
+                // in a declaration or after an operator, never where a configuration starts
+                Word::Configuration if !decl && matches!(self.prev, Last::Start | Last::Eol) => {
                     self.close_all(s);
                     self.stack.push(Frame::Config(s, e));
                 }

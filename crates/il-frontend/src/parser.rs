@@ -1662,7 +1662,8 @@ fn summarize_expected(expected: &[String]) -> String {
             let name_like = t
                 .chars()
                 .all(|c| c.is_ascii_uppercase() || c.is_ascii_digit() || c == '_')
-                && (crate::lexer::classify(t).is_name() || matches!(t, "ON" | "TASK" | "WITH"));
+                && (crate::lexer::classify(t).is_name()
+                    || matches!(t, "ON" | "TASK" | "WITH" | "CONFIGURATION" | "RESOURCE"));
             if (operand || has("IDENT")) && name_like {
                 continue;
             }

@@ -105,7 +105,7 @@ pub(crate) fn lower(
     objects: &[(String, String)],
     pou: &Element,
 ) -> Res<NwlBody> {
-    let flags = flags(file, pou)?;
+    let flags = flags(pou);
     let root = sfc
         .child("XmlArchive")
         .and_then(|a| a.child("Data"))
@@ -261,9 +261,9 @@ fn declares(declaration: &str, var: &str) -> bool {
 
 /// The SFC flags the POU's settings enable (`<ObjectProperties>` > `SFCProperty` > `Flags`: a
 /// flag's name, then its `Use` and `Declare`), each with whether TwinCAT declares its variable and
-/// the offset of its name; settings that defer to the project's defaults are an error (ladderc
-/// does not read them).
-fn flags(file: FileId, pou: &Element) -> Res<Vec<(String, bool, usize)>> {
+/// the offset of its name; settings that defer to the project's defaults (`UseDefaults`) are read
+/// the same way: TwinCAT saves the defaults in force with the POU.
+fn flags(pou: &Element) -> Vec<(String, bool, usize)> {
     let Some(prop) = pou
         .child("ObjectProperties")
         .and_then(|p| p.child("XmlArchive"))
@@ -274,7 +274,7 @@ fn flags(file: FileId, pou: &Element) -> Res<Vec<(String, bool, usize)>> {
                 .find(|o| o.name() == "o" && o.attr("t") == Some("SFCProperty"))
         })
     else {
-        return Ok(Vec::new());
+        return Vec::new();
     };
     let v = |o: &Element, n: &str| {
         o.children
@@ -282,18 +282,12 @@ fn flags(file: FileId, pou: &Element) -> Res<Vec<(String, bool, usize)>> {
             .find(|c| c.name() == "v" && c.attr("n") == Some(n))
             .map(|c| c.text_ref().trim().eq_ignore_ascii_case("true"))
     };
-    if v(prop, "UseDefaults") == Some(true) {
-        return Err(Box::new(
-            Diagnostic::error(
-                code::E0321,
-                "TwinCAT SFC body: the POU's SFC settings are the project's defaults, which                  ladderc does not read (it would not know which flags, SFCInit, SFCReset ...,                  the chart has)",
-            )
-            .at(Span::new(file, prop.tag_start(), prop.tag_end()))
-            .with_hint(
-                "untick `use defaults` in the POU's SFC settings (Properties > SFC settings) so                  that its flags are saved with it",
-            ),
-        ));
-    }
+    // `UseDefaults` (the POU's "use defaults" box, ticked for every chart TwinCAT creates) defers
+    // to the project's SFC settings, which TwinCAT copies into the properties of each SFC object
+    // it creates (Beckhoff Infosys, PLC project properties, "Category SFC": "Each new SFC object
+    // automatically has the configured settings in its properties") and saves beside the box:
+    // the `Flags` list below is the settings in force, read as a POU's own; no list is TwinCAT's
+    // factory setting, no flag used
     let mut out = Vec::new();
     for d in prop
         .children
@@ -316,7 +310,7 @@ fn flags(file: FileId, pou: &Element) -> Res<Vec<(String, bool, usize)>> {
             }
         }
     }
-    Ok(out)
+    out
 }
 
 fn fail(file: FileId, el: &Element, msg: String) -> Box<Diagnostic> {

@@ -120,6 +120,9 @@ pub struct Session {
     /// The user libraries' source projects (`--lib`, [`Options::libraries`]): read with the inputs,
     /// see [`crate::user_libraries`].
     pub libraries: Vec<PathBuf>,
+    /// The files read so far that are TwinCAT 3 objects (`.TcPOU` ...), known to the semantic
+    /// analysis ([`il_frontend::sema::TwinCatFiles`]).
+    pub twincat_files: Vec<diagnostics::FileId>,
 }
 
 /// What [`Session::parse`] produced: the user's units and what they are compiled with.
@@ -219,6 +222,7 @@ impl Session {
             name_table: true,
             task_cycle_ms: None,
             libraries: Vec::new(),
+            twincat_files: Vec::new(),
         }
     }
 
@@ -292,7 +296,12 @@ impl Session {
             references.is_some(),
             &mut expand_diags,
         );
-        let paths: Vec<PathBuf> = libraries.files.iter().cloned().chain(paths).collect();
+        // a library's PROGRAM named like a POU of the application (the `MAIN` every library made
+        // from TwinCAT's project template keeps) is shadowed by it: not read
+        let read = |p: &Path| self.read_file(p).ok();
+        let lib_files =
+            crate::user_libraries::unshadowed(&libraries.files, &paths, |p: &Path| read(p));
+        let paths: Vec<PathBuf> = lib_files.into_iter().chain(paths).collect();
         let _libraries = il_frontend::st::qualifiers::UserLibraries::set(libraries.namespaces);
         // the projects' compiler defines, known to the conditional pragmas of every file read
         // below (and read again), until this function returns
@@ -555,6 +564,7 @@ impl Session {
                     }
                     twincat_units.resize(units.len(), false);
                     twincat_units.push(true);
+                    self.twincat_files.push(file);
                     Some(text)
                 }
                 None => None,
@@ -1173,6 +1183,7 @@ impl Session {
     /// The semantic analysis of `units` into [`Session::diags`], with or without the name table
     /// ([`Session::name_table`]).
     fn analyze(&mut self, units: &[CompilationUnit]) -> il_frontend::sema::Model {
+        let _twincat = il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
         let model = if self.name_table {
             il_frontend::sema::analyze(units, &mut self.diags)
         } else {
@@ -1386,6 +1397,8 @@ impl Session {
                 // The lowered program: its warnings were given on the user's program already; an error
                 // here would be a lowering bug, and is reported.
                 let mut second = Diagnostics::new();
+                let _twincat =
+                    il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
                 let m = if self.name_table {
                     il_frontend::sema::analyze(&lowered.all_units, &mut second)
                 } else {

@@ -1,7 +1,7 @@
 //! Beckhoff Tc2_MC2's `AXIS_REF` members read from ladderc's simulated axis.
 //!
 //! Input: one POU's variables and body (IL, before the semantic checks). Output: the body with
-//! `Axis.ReadStatus()` a call of a hidden MC_ReadStatus instance, `Axis.Status.<field>` and
+//! `Axis.ReadStatus()` (and `Axis();`, a call of the AXIS_REF block itself) a call of a hidden MC_ReadStatus instance, `Axis.Status.<field>` and
 //! `Axis.NcToPlc.<field>` reads of hidden MC_ReadStatus / MC_ReadActualPosition /
 //! MC_ReadActualVelocity instances that the body calls first in every scan; one located E1042
 //! per member with no counterpart. Invariants: only variables the POU declares as `AXIS_REF` are
@@ -606,6 +606,20 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagno
                 match axes.find(instance) {
                     // `Axis.ReadStatus()`, `axisRefs[i].ReadStatus()`, `s.Axis.ReadStatus()`
                     Some((a, ix, rest)) if matches!(rest.as_slice(), [Accessor::Field(m)] if m.key() == "READSTATUS") =>
+                    {
+                        used.note(a);
+                        replace = Some(call(a, "STATUS", &ix));
+                    }
+                    // `Axis();`: AXIS_REF is a FUNCTION_BLOCK of Tc2_MC2 (its ReadStatus an
+                    // action of it), and a call of the instance refreshes its status as
+                    // `Axis.ReadStatus()` does (before: E1018 "AXIS_REF, not an FB instance")
+                    Some((a, ix, rest))
+                        if rest.is_empty()
+                            && match args {
+                                CallArgs::None => true,
+                                CallArgs::Formal(l) => l.is_empty(),
+                                CallArgs::NonFormal(l) => l.is_empty(),
+                            } =>
                     {
                         used.note(a);
                         replace = Some(call(a, "STATUS", &ix));

@@ -288,6 +288,91 @@ fn read_library(session: &Session, lib: &Path, diags: &mut Diagnostics) -> Optio
     })
 }
 
+/// The library files `lib_files` without the programs the application's files `app_files` shadow:
+/// a library's object file that is one PROGRAM (TwinCAT: one POU per file) named like a POU of the
+/// application. TwinCAT keeps a library's POUs in the library's namespace, where the application's
+/// own name wins (Beckhoff Infosys, "Library namespace"; CODESYS's shadowing rules search the
+/// application before its libraries), and a library runs none of its programs by itself: the
+/// `MAIN` that every library made from TwinCAT's "Standard PLC project" template keeps is no
+/// duplicate of the application's. `read` gives a file's text.
+pub fn unshadowed(
+    lib_files: &[PathBuf],
+    app_files: &[PathBuf],
+    read: impl Fn(&Path) -> Option<String>,
+) -> Vec<PathBuf> {
+    if lib_files.is_empty() {
+        return Vec::new();
+    }
+    let mut app = std::collections::HashSet::new();
+    for f in app_files {
+        if let Some(text) = read(f) {
+            app.extend(pou_names(&text));
+        }
+    }
+    lib_files
+        .iter()
+        .filter(|f| {
+            let Some(text) = read(f) else {
+                return true;
+            };
+            let programs = il_frontend::st::qualifiers::program_names(&text);
+            !(programs.len() == 1 && pou_names(&text).len() == 1 && app.contains(&programs[0]))
+        })
+        .cloned()
+        .collect()
+}
+
+/// The names after `PROGRAM`, `FUNCTION_BLOCK`, `FUNCTION`, `INTERFACE` and `TYPE` in `text`, upper
+/// case (a word's first letters: enough to tell which POUs and types a file declares).
+fn pou_names(text: &str) -> Vec<String> {
+    let b = text.as_bytes();
+    let word = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        if !word(b[i]) || (i > 0 && word(b[i - 1])) {
+            i += 1;
+            continue;
+        }
+        let mut j = i;
+        while j < b.len() && word(b[j]) {
+            j += 1;
+        }
+        let w = text[i..j].to_ascii_uppercase();
+        if ["PROGRAM", "FUNCTION_BLOCK", "FUNCTION", "INTERFACE", "TYPE"].contains(&w.as_str())
+            && b.get(j).is_some_and(u8::is_ascii_whitespace)
+        {
+            let mut k = j;
+            while b.get(k).is_some_and(u8::is_ascii_whitespace) {
+                k += 1;
+            }
+            // modifiers (`FUNCTION_BLOCK PUBLIC FB_X`) are skipped
+            loop {
+                let s = k;
+                while k < b.len() && word(b[k]) {
+                    k += 1;
+                }
+                let name = text[s..k].to_ascii_uppercase();
+                let modifier = ["PUBLIC", "INTERNAL", "FINAL", "ABSTRACT"].contains(&name.as_str());
+                if modifier {
+                    while b.get(k).is_some_and(u8::is_ascii_whitespace) {
+                        k += 1;
+                    }
+                    continue;
+                }
+                if !name.is_empty() {
+                    out.push(name);
+                }
+                break;
+            }
+            i = k.max(j);
+        } else {
+            i = j;
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -794,12 +794,16 @@ impl Analyzer<'_> {
                     .hint("each variable of a POU needs its own name (names are case-insensitive)");
                     continue;
                 }
-                if let Some(word) = configuration_keyword(&d.name.name) {
+                let twincat_word = twincat_configuration_word(&d.name.name, d.name.span.file);
+                let accepted = configuration_keyword(&d.name.name)
+                    .map(|w| (w, "CODESYS and TwinCAT do"))
+                    .or(twincat_word.map(|w| (w, "TwinCAT does")));
+                if let Some((word, who)) = accepted {
                     self.warning(
                         code::W1418,
                         d.name.span,
                         format!(
-                            "`{}` is a keyword of IEC 61131-3 configurations (`{word}`): accepted as a variable name, as CODESYS and TwinCAT do",
+                            "`{}` is a keyword of IEC 61131-3 configurations (`{word}`): accepted as a variable name, as {who}",
                             d.name.name
                         ),
                     )
@@ -818,9 +822,9 @@ impl Analyzer<'_> {
                 let keyword_parameter = self
                     .keyword_parameters
                     .contains(&(d.name.span.file, d.name.span.start));
-                if let Some(why) = reserved_name(&d.name.name)
-                    .filter(|_| !self.declaring_fields && !keyword_parameter)
-                {
+                if let Some(why) = reserved_name(&d.name.name).filter(|_| {
+                    !self.declaring_fields && !keyword_parameter && twincat_word.is_none()
+                }) {
                     // reported once, at the declaration; the variable is kept so that its uses
                     // give no further errors
                     self.error(
@@ -1790,6 +1794,23 @@ pub fn configuration_keyword(name: &str) -> Option<&'static str> {
     ]
     .into_iter()
     .find(|(k, _)| k.eq_ignore_ascii_case(name))
+    .map(|(_, place)| place)
+}
+
+/// `CONFIGURATION` and `RESOURCE` naming a variable of a TwinCAT 3 object (`Configuration :
+/// ST_Config;`, an input of real projects' blocks): TwinCAT configures tasks in the project tree,
+/// has no textual configuration, and its list of the keywords that cannot name a variable (Beckhoff
+/// Infosys, TwinCAT 3 PLC, "Keywords") has neither, so it is accepted there with W1418 as `ON` is
+/// (elsewhere, B&R's sources and IEC 61131-3 text, they stay E1031). The returned text shows the
+/// word's place in a configuration.
+fn twincat_configuration_word(name: &str, file: diagnostics::FileId) -> Option<&'static str> {
+    [
+        ("CONFIGURATION", "CONFIGURATION c ... END_CONFIGURATION"),
+        ("RESOURCE", "RESOURCE r ON cpu"),
+    ]
+    .into_iter()
+    .find(|(k, _)| k.eq_ignore_ascii_case(name))
+    .filter(|_| super::is_twincat_file(file))
     .map(|(_, place)| place)
 }
 

@@ -30,6 +30,41 @@ use crate::ast::CompilationUnit;
 use diagnostics::{code, Code, Diagnostic, Diagnostics};
 use std::collections::HashMap;
 
+thread_local! {
+    /// The files that are TwinCAT 3 objects (`.TcPOU`, `.TcGVL` ...): see [`TwinCatFiles`].
+    static TWINCAT_FILES: std::cell::RefCell<std::collections::HashSet<diagnostics::FileId>> =
+        Default::default();
+}
+
+/// The files read from TwinCAT 3 objects, known to the analyses run while the guard lives
+/// (`TwinCatFiles::set(files)`): what TwinCAT accepts and IEC 61131-3 reserves is accepted there
+/// (`Configuration`, `Resource` naming a variable: W1418).
+pub struct TwinCatFiles {
+    before: std::collections::HashSet<diagnostics::FileId>,
+}
+
+impl TwinCatFiles {
+    /// Makes `files` known until the guard is dropped (then the ones known before are again).
+    pub fn set(files: impl IntoIterator<Item = diagnostics::FileId>) -> TwinCatFiles {
+        let files = files.into_iter().collect();
+        TwinCatFiles {
+            before: TWINCAT_FILES.with(|t| t.replace(files)),
+        }
+    }
+}
+
+impl Drop for TwinCatFiles {
+    fn drop(&mut self) {
+        let before = std::mem::take(&mut self.before);
+        TWINCAT_FILES.with(|t| t.replace(before));
+    }
+}
+
+/// Whether `file` is a TwinCAT 3 object ([`TwinCatFiles`]).
+pub(crate) fn is_twincat_file(file: diagnostics::FileId) -> bool {
+    TWINCAT_FILES.with(|t| t.borrow().contains(&file))
+}
+
 /// Analyses `units` together and returns the resolved model; problems go to `diags`.
 pub fn analyze(units: &[CompilationUnit], diags: &mut Diagnostics) -> Model {
     analyze_with(units, diags, true)

@@ -311,6 +311,15 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
         let w = word(src, t).to_ascii_uppercase();
         match w.as_str() {
             "TYPE" => i = skip_to(i + 1, "END_TYPE"),
+            // a block `CONFIGURATION c`; a variable so named (`Configuration := 40`, TwinCAT:
+            // W1418) is followed by no name
+            "CONFIGURATION" | "RESOURCE"
+                if !toks
+                    .get(i + 1)
+                    .is_some_and(|t| matches!(t.tok, Tok::Ident | Tok::Kw(_))) =>
+            {
+                i += 1
+            }
             "CONFIGURATION" => i = skip_to(i + 1, "END_CONFIGURATION"),
             "RESOURCE" => i = skip_to(i + 1, "END_RESOURCE"),
             "ACTIONS" => {
@@ -791,15 +800,9 @@ fn keyword_declarations(
     diags: &mut Diagnostics,
     text: &mut Option<String>,
 ) -> Vec<(usize, String)> {
-    const BLOCK_WORDS: [&str; 7] = [
-        "CONFIGURATION",
-        "RESOURCE",
-        "TYPE",
-        "STRUCT",
-        "PROGRAM",
-        "FUNCTION",
-        "FUNCTION_BLOCK",
-    ];
+    // (`CONFIGURATION` and `RESOURCE` are names to the grammar: sema reports them, E1031, or
+    // W1418 in a TwinCAT object)
+    const BLOCK_WORDS: [&str; 5] = ["TYPE", "STRUCT", "PROGRAM", "FUNCTION", "FUNCTION_BLOCK"];
     let mut in_decl = false;
     let mut in_struct = false;
     let mut fields = Vec::new();
@@ -2460,6 +2463,10 @@ pub fn compile_pending(
                 let keyword_var = p.var_blocks.iter().flat_map(|b| b.vars.iter()).any(|v| {
                     crate::sema::reserved_name(&v.name.name) == Some("a keyword")
                         && !keyword_parameters.contains(&(v.name.span.file, v.name.span.start))
+                            // (no ST keyword: the body reads them as names; W1418 in TwinCAT)
+                            && !["CONFIGURATION", "RESOURCE"]
+                                .iter()
+                                .any(|k| v.name.name.eq_ignore_ascii_case(k))
                 });
                 // (a declaration the parser could not read, `OF : BOOL;`, is already E1031 there)
                 let dropped_keyword_var = diags.iter().any(|d| {

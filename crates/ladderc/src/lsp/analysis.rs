@@ -100,7 +100,10 @@ pub fn analyze(path: &Path, text: &str, root: Option<&Path>) -> Analysis {
         .files()
         .find(|(_, f)| Path::new(&f.name) == path)
         .map(|(id, _)| id);
-    let model = il_frontend::sema::analyze(&units, &mut quiet);
+    let model = {
+        let _twincat = il_frontend::sema::TwinCatFiles::set(s.twincat_files.iter().copied());
+        il_frontend::sema::analyze(&units, &mut quiet)
+    };
     Analysis {
         path: path.to_path_buf(),
         text: text.to_string(),
