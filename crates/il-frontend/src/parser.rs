@@ -161,6 +161,14 @@ pub fn simple_op(word: Word) -> Option<SimpleOp> {
     Some((op, negated, word))
 }
 
+/// An element of a structure initializer after its first (see `Ctx::struct_elements`).
+pub enum StructItem {
+    /// `name := value`.
+    Named((Ident, Initializer)),
+    /// A value alone, continuing the bracketless array of the element before it.
+    Bare(Initializer, Span),
+}
+
 /// Parser state shared by the grammar actions.
 pub struct Ctx<'s> {
     /// The file spans point into.
@@ -349,6 +357,59 @@ impl<'s> Ctx<'s> {
             t = *element;
         }
         t
+    }
+
+    /// The elements of a structure initializer: `first`, then `rest`, where a bare value joins
+    /// the element before it as the next element of an array written without brackets (CODESYS
+    /// V2.3: `(id := 1, items := (a := 11), (a := 13))` is `items := [(a := 11), (a := 13)]`).
+    pub fn struct_elements(
+        &mut self,
+        first: (Ident, Initializer),
+        rest: Vec<StructItem>,
+    ) -> Vec<(Ident, Initializer)> {
+        let mut out = vec![first];
+        // whether the last element's value is an array this function made
+        let mut joined = false;
+        for item in rest {
+            match item {
+                StructItem::Named(e) => {
+                    out.push(e);
+                    joined = false;
+                }
+                StructItem::Bare(value, span) => {
+                    let Some((_, last)) = out.last_mut() else {
+                        continue;
+                    };
+                    let element = ArrayInitElement {
+                        repeat: None,
+                        value,
+                    };
+                    match last {
+                        Initializer::Array(elements, s) if joined => {
+                            elements.push(element);
+                            s.end = span.end;
+                        }
+                        _ => {
+                            let before =
+                                std::mem::replace(last, Initializer::Array(Vec::new(), span));
+                            let start = init_span(&before).map_or(span.start, |s| s.start);
+                            *last = Initializer::Array(
+                                vec![
+                                    ArrayInitElement {
+                                        repeat: None,
+                                        value: before,
+                                    },
+                                    element,
+                                ],
+                                Span { start, ..span },
+                            );
+                            joined = true;
+                        }
+                    }
+                }
+            }
+        }
+        out
     }
 
     /// An array or structure initializer. One nested deeper than [`MAX_TYPE_NESTING`] is E0212 and
@@ -1913,6 +1974,14 @@ pub(crate) fn implicit_program_warning(at: Span, name: &str) -> Diagnostic {
     .with_hint(format!(
         "wrap the instructions in `PROGRAM {name}` ... `END_PROGRAM` to silence this warning"
     ))
+}
+
+/// The span of an initializer written with brackets or parentheses.
+fn init_span(i: &Initializer) -> Option<Span> {
+    match i {
+        Initializer::Array(_, s) | Initializer::Struct(_, s) => Some(*s),
+        Initializer::Value(_) => None,
+    }
 }
 
 #[cfg(test)]

@@ -325,14 +325,26 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
                     }
                     Some(Initializer::Value(op))
                 }
-                None => {
-                    ctx.error(
-                        code::E3011,
-                        span,
-                        format!("initial value `{text}` is not a literal or a constant name"),
-                    );
-                    None
-                }
+                // an integer constant expression (`(BLOCK * 2)`, `((1024 * 1024) * 30)`: CODESYS
+                // writes a declaration's expression so, fully parenthesised), computed now as
+                // the ST reader computes `BLOCK * 2`
+                None => match values::const_int_expr(text, &|n| ctx.constant(n)) {
+                    Ok(n) => Some(Initializer::Value(il_frontend::ast::Operand::literal(
+                        il_frontend::ast::Literal {
+                            kind: il_frontend::ast::LiteralKind::Int(n),
+                            type_prefix: None,
+                            span,
+                        },
+                    ))),
+                    Err(_) => {
+                        ctx.error(
+                            code::E3011,
+                            span,
+                            format!("initial value `{text}` is not a literal, a constant name or an integer constant expression"),
+                        );
+                        None
+                    }
+                },
             }
         }
         "arrayValue" => {

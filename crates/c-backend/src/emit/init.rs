@@ -66,12 +66,18 @@ impl Gen<'_> {
                 for f in &a.within {
                     let _ = write!(own, ".{}", mangle::var(f));
                 }
-                let Some(prefix) = lv.strip_suffix(own.as_str()) else {
-                    self.unsupported(span, "this address as an initial value");
-                    let _ = writeln!(out, "{pad}{lv} = ladderc_ref(NULL, 0);");
-                    return;
+                // of a global variable: its own C name (`ADR(GVL.lamp)`)
+                let mut target = match a.global {
+                    Some(g) => self.global_name(g),
+                    None => {
+                        let Some(prefix) = lv.strip_suffix(own.as_str()) else {
+                            self.unsupported(span, "this address as an initial value");
+                            let _ = writeln!(out, "{pad}{lv} = ladderc_ref(NULL, 0);");
+                            return;
+                        };
+                        cfmt!("{prefix}{}", mangle::var(&a.base))
+                    }
                 };
-                let mut target = cfmt!("{prefix}{}", mangle::var(&a.base));
                 // the array of the last index, which a reference to an element is made from (as
                 // `ADR(a[i])` in a body: refs.rs)
                 let mut whole = None;

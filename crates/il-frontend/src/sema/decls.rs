@@ -145,37 +145,31 @@ impl Analyzer<'_> {
         for id in ids {
             self.resolve_user_type(id);
         }
-        for unit in units {
-            for item in &unit.items {
-                if let LibraryElement::DataTypes(decls) = item {
-                    for d in decls {
-                        if let ast::TypeDef::Struct { fields } = &d.def {
-                            let Some(&id) = self.type_names.get(&d.name.key()) else {
-                                continue;
-                            };
-                            if self.model.types[id.0 as usize].span != d.span {
-                                continue; // a duplicate
-                            }
-                            let blocks = [VarBlock {
-                                name: None,
-                                kind: VarKind::Local,
-                                constant: false,
-                                retain: false,
-                                vars: self.unlocated_fields(&d.name.name, fields),
-                                span: d.span,
-                            }];
-                            self.declaring_fields = true;
-                            let vars = self.declare_vars(&blocks, &Consts::new(), None);
-                            self.declaring_fields = false;
-                            if d.union {
-                                self.check_union_members(&d.name.name, &vars);
-                            }
-                            self.model.types[id.0 as usize].def =
-                                UserTypeDef::Struct { fields: vars };
-                        }
-                    }
-                }
+        for d in struct_declaration_order(units) {
+            let ast::TypeDef::Struct { fields } = &d.def else {
+                continue;
+            };
+            let Some(&id) = self.type_names.get(&d.name.key()) else {
+                continue;
+            };
+            if self.model.types[id.0 as usize].span != d.span {
+                continue; // a duplicate
             }
+            let blocks = [VarBlock {
+                name: None,
+                kind: VarKind::Local,
+                constant: false,
+                retain: false,
+                vars: self.unlocated_fields(&d.name.name, fields),
+                span: d.span,
+            }];
+            self.declaring_fields = true;
+            let vars = self.declare_vars(&blocks, &Consts::new(), None);
+            self.declaring_fields = false;
+            if d.union {
+                self.check_union_members(&d.name.name, &vars);
+            }
+            self.model.types[id.0 as usize].def = UserTypeDef::Struct { fields: vars };
         }
         // a structure that holds itself by value has no size: E0343, the field cut
         self.check_struct_cycles();
@@ -318,6 +312,8 @@ impl Analyzer<'_> {
             let value = self.const_init(&init, &ty, &global_consts);
             self.model.globals[i].init = value;
         }
+        // `ADR(x)` in a global's initial value (`fb : FB_M := (pLamp := ADR(GVL.lamp))`)
+        self.global_address_initial_values(units);
         // Tasks and program instances.
         for (ci, c) in configs.iter().enumerate() {
             for (ri, r) in c.resources.iter().enumerate() {
@@ -867,7 +863,10 @@ impl Analyzer<'_> {
                 list_seen.insert(&d.name.name, position, |p| out[p].name.as_str());
             }
         }
-        self.address_initial_values(blocks, &mut out, pou);
+        // a global list's: once every global is declared (`global_address_initial_values`)
+        if pou.is_some() || self.declaring_fields {
+            self.address_initial_values(blocks, &mut out, pou);
+        }
         out
     }
 
@@ -1895,6 +1894,75 @@ fn vendor_block(name: &str) -> Option<&'static str> {
     } else {
         None
     }
+}
+
+/// The structure declarations of `units` in the order their fields are declared: in source order,
+/// except that a structure whose field has an initial value of another structure's type (`START :
+/// DAY_DATA := (DAY := 24)`, also an array of it) comes after that structure, which may be declared
+/// below it (IEC 61131-3 and CODESYS do not order type declarations; OSCAT's PLCopen export
+/// initialises `HOLIDAY : ARRAY[..] OF HOLIDAY_DATA` above HOLIDAY_DATA): its field names are known
+/// when the initial value is read. A cycle keeps source order (E0343 reports it).
+fn struct_declaration_order(units: &[CompilationUnit]) -> Vec<&ast::TypeDecl> {
+    let decls: Vec<&ast::TypeDecl> = units
+        .iter()
+        .flat_map(|u| &u.items)
+        .filter_map(|item| match item {
+            LibraryElement::DataTypes(decls) => Some(decls),
+            _ => None,
+        })
+        .flatten()
+        .filter(|d| matches!(d.def, ast::TypeDef::Struct { .. }))
+        .collect();
+    let mut index: HashMap<String, usize> = HashMap::new();
+    for (i, d) in decls.iter().enumerate() {
+        index.entry(d.name.key()).or_insert(i);
+    }
+    // the structures the initialised fields of `d` hold by value
+    let needs = |d: &ast::TypeDecl| -> Vec<usize> {
+        let ast::TypeDef::Struct { fields } = &d.def else {
+            return Vec::new();
+        };
+        let mut out = Vec::new();
+        for f in fields.iter().filter(|f| f.init.is_some()) {
+            let mut ty = &f.ty;
+            while let TypeRef::Array { element, .. } = ty {
+                ty = element;
+            }
+            if let TypeRef::Named(n) = ty {
+                if let Some(&i) = index.get(&n.key()) {
+                    out.push(i);
+                }
+            }
+        }
+        out
+    };
+    // depth first, without recursion (a long chain of types is no deep stack)
+    let mut state = vec![0u8; decls.len()]; // 0 new, 1 on the path, 2 placed
+    let mut order = Vec::with_capacity(decls.len());
+    for start in 0..decls.len() {
+        if state[start] != 0 {
+            continue;
+        }
+        state[start] = 1;
+        let mut stack: Vec<(usize, Vec<usize>)> = vec![(start, needs(decls[start]))];
+        while let Some((at, pending)) = stack.last_mut() {
+            let at = *at;
+            match pending.pop() {
+                Some(next) if state[next] == 0 => {
+                    state[next] = 1;
+                    let n = needs(decls[next]);
+                    stack.push((next, n));
+                }
+                Some(_) => {}
+                None => {
+                    state[at] = 2;
+                    order.push(decls[at]);
+                    stack.pop();
+                }
+            }
+        }
+    }
+    order
 }
 
 #[cfg(test)]

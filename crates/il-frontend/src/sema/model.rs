@@ -742,7 +742,7 @@ pub enum ConstValue {
     Address(AddressInit),
 }
 
-/// The initial value `ADR(path)` of a reference variable of a POU.
+/// The initial value `ADR(path)` of a reference variable of a POU or of a global variable.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct AddressInit {
     /// The reference variable's own name (its C lvalue ends with it); of a field or input of an
@@ -750,8 +750,10 @@ pub struct AddressInit {
     pub of_var: String,
     /// The fields from `of_var` to the reference (`["pLamp"]`); empty: `of_var` itself.
     pub within: Vec<String>,
-    /// The variable of the same POU the address is taken of.
+    /// The variable of the same POU, or the global variable, the address is taken of.
     pub base: String,
+    /// The global variable `base` is, when it is one (its C name is not the POU's).
+    pub global: Option<GlobalRef>,
     /// Its fields and zero-based element offsets, in order.
     pub steps: Vec<AddressStep>,
 }
