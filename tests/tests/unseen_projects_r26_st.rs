@@ -3,10 +3,13 @@
 //! - a name qualified with a NAMESPACE declared in another file of the project
 //!   (`Plant.Util.Twice(21)`, lib.st holding `NAMESPACE Plant.Util ... END_NAMESPACE`) names that
 //!   function, and `USING Plant.Util;` of it is no W1421 (before: E1032 "`Plant` is neither a
-//!   variable nor a library", with a hint to add POUs that were already there).
+//!   variable nor a library", with a hint to add POUs that were already there);
+//! - FB_init arguments on a function-block field of a STRUCT (`fbLamp : FB_Lamp(sLampName :=
+//!   'Kitchen');`, TwinCAT) initialise the field of each instance of the structure, as in a VAR
+//!   block (before: E0011 "unexpected `:=`").
 
 mod common;
-use common::{in_dir, write_in};
+use common::{column, in_dir, run_text, write_in};
 
 /// IEC 61131-3 ed. 3 (6.9): a namespace is not tied to a file, and the files given together are
 /// one project (SIMATIC AX puts `NAMESPACE Siemens.Ax` in one file and calls its function from
@@ -57,6 +60,59 @@ END_PROGRAM
     );
     assert_eq!(code, Some(0), "{err}");
     assert!(!err.contains("E1032") && !err.contains("W1421"), "{err}");
-    assert_eq!(common::column(&out, "Main.a"), vec![42.0], "{out}");
-    assert_eq!(common::column(&out, "Main.b"), vec![44.0], "{out}");
+    assert_eq!(column(&out, "Main.a"), vec![42.0], "{out}");
+    assert_eq!(column(&out, "Main.b"), vec![44.0], "{out}");
+}
+
+/// Beckhoff's FB_init: "Any additional variables specified there must be set when declaring a
+/// function block instance"; a STRUCT field is such a declaration. Each instance of the structure
+/// (one in a program, each element of an array of it) runs FB_init with the field's arguments,
+/// positional or named.
+#[test]
+fn fb_init_arguments_on_a_structure_field_initialise_it() {
+    let src = "FUNCTION_BLOCK FB_Lamp
+VAR_OUTPUT
+    nWatts : INT;
+END_VAR
+VAR
+    sName : STRING;
+END_VAR
+METHOD FB_init : BOOL
+VAR_INPUT
+    bInitRetains : BOOL;
+    bInCopyCode : BOOL;
+    sLampName : STRING;
+    nPower : INT;
+END_VAR
+sName := sLampName;
+nWatts := nPower;
+END_METHOD
+END_FUNCTION_BLOCK
+
+TYPE ST_Room :
+STRUCT
+    fbLamp : FB_Lamp(sLampName := 'Kitchen', nPower := 40);
+    fbSpot : FB_Lamp('Spot', 7);
+    nCount : INT;
+END_STRUCT
+END_TYPE
+
+PROGRAM Main
+VAR
+    room : ST_Room;
+    rooms : ARRAY[1..2] OF ST_Room;
+    hall : FB_Lamp(sLampName := 'Hall', nPower := 60);
+    total : INT;
+    name : STRING;
+END_VAR
+room.fbLamp();
+total := room.fbLamp.nWatts + room.fbSpot.nWatts + rooms[2].fbLamp.nWatts + hall.nWatts;
+name := room.fbLamp.sName;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("room.st", src, 1, "Main.total,Main.name");
+    assert!(!stderr.contains("error"), "{stderr}");
+    // 40 + 7 + 40 + 60
+    assert_eq!(column(&trace, "Main.total"), vec![147.0], "{trace}");
+    assert!(trace.contains("\"Kitchen\""), "{trace}");
 }
