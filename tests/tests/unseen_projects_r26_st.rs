@@ -6,10 +6,13 @@
 //!   variable nor a library", with a hint to add POUs that were already there);
 //! - FB_init arguments on a function-block field of a STRUCT (`fbLamp : FB_Lamp(sLampName :=
 //!   'Kitchen');`, TwinCAT) initialise the field of each instance of the structure, as in a VAR
-//!   block (before: E0011 "unexpected `:=`").
+//!   block (before: E0011 "unexpected `:=`");
+//! - an unknown enumeration (`Area#Outputs` of a vendor library not given) is one E1001 at its
+//!   first use, counting the others (before: one E1001 per use, 8 for one cause in a SIMATIC AX
+//!   project).
 
 mod common;
-use common::{column, in_dir, run_text, write_in};
+use common::{check_files, check_text, column, in_dir, run_text, write_in};
 
 /// IEC 61131-3 ed. 3 (6.9): a namespace is not tied to a file, and the files given together are
 /// one project (SIMATIC AX puts `NAMESPACE Siemens.Ax` in one file and calls its function from
@@ -115,4 +118,59 @@ END_PROGRAM
     // 40 + 7 + 40 + 60
     assert_eq!(column(&trace, "Main.total"), vec![147.0], "{trace}");
     assert!(trace.contains("\"Kitchen\""), "{trace}");
+}
+
+/// One cause, one error: `Area` used five times in two POUs of two files (also inside the calls
+/// of an unknown function, whose E1019 is once per POU) is one E1001 at its first use.
+#[test]
+fn an_unknown_enumeration_is_one_error() {
+    let (code, lines) = check_files(&[
+        (
+            "a.st",
+            "PROGRAM Main
+VAR
+    b : BYTE;
+    i : INT;
+END_VAR
+PeekArea(Area#Outputs, 10, b);
+FOR i := 0 TO 7 DO
+    PeekArea(Area#Inputs, i, b);
+END_FOR;
+IF b = 0 THEN
+    b := SEL(Area#Markers = Area#Inputs, b, 1);
+END_IF;
+END_PROGRAM
+",
+        ),
+        (
+            "b.st",
+            "FUNCTION_BLOCK FB_Io
+VAR
+    x : INT;
+END_VAR
+IF x = Area#Outputs THEN x := 1; END_IF;
+END_FUNCTION_BLOCK
+",
+        ),
+    ]);
+    assert_eq!(code, Some(1));
+    let enums: Vec<&String> = lines.iter().filter(|l| l.contains("E1001")).collect();
+    assert_eq!(enums.len(), 1, "{lines:#?}");
+    assert!(
+        enums[0].starts_with("a.st:6:10: error[E1001]: unknown enumeration `Area` (used 4 more times, not reported)"),
+        "{lines:#?}"
+    );
+    // one use alone: the message as before
+    let (_, lines) = check_text(
+        "one.st",
+        "PROGRAM Main
+VAR x : INT; END_VAR
+IF x = Mode#Auto THEN x := 1; END_IF;
+END_PROGRAM
+",
+    );
+    assert!(
+        lines.iter().any(|l| l.ends_with("unknown enumeration `Mode` (hint: declare it in a TYPE block (or give the library that declares it with --lib))")),
+        "{lines:#?}"
+    );
 }
