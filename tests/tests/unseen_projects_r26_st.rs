@@ -9,7 +9,10 @@
 //!   block (before: E0011 "unexpected `:=`");
 //! - an unknown enumeration (`Area#Outputs` of a vendor library not given) is one E1001 at its
 //!   first use, counting the others (before: one E1001 per use, 8 for one cause in a SIMATIC AX
-//!   project).
+//!   project);
+//! - description and attribute pragmas (`{ DE:"Heater relay" }`, `{s7.extern=ReadWrite}`) are one
+//!   W0301 note per file (before: W0300 "holds code that does not run" at each, 189 in one list);
+//!   Beremiz's C code stays W0300.
 
 mod common;
 use common::{check_files, check_text, column, in_dir, run_text, write_in};
@@ -173,4 +176,38 @@ END_PROGRAM
         lines.iter().any(|l| l.ends_with("unknown enumeration `Mode` (hint: declare it in a TYPE block (or give the library that declares it with --lib))")),
         "{lines:#?}"
     );
+}
+
+/// IEC 61131-3 ed. 3 (6.2) leaves pragmas to the implementation; a `{ key:"text" }` or
+/// `{key=value}` pair describes its declaration (a CODESYS-based editor's description, a SIMATIC AX
+/// export attribute): metadata, no code. The program runs as written; the file's pragmas are one
+/// note, and a C-code pragma beside them is still W0300.
+#[test]
+fn description_pragmas_are_one_note_per_file() {
+    let src = "VAR_GLOBAL
+    SetPoint : REAL := 21.5;\t{ DE:\"Room setpoint\" }
+    Hyst : REAL := 0.5;\t{ DE:\"Hysteresis\" }
+    {s7.extern=ReadWrite}
+    Heater : BOOL;\t{G:'Outputs'}
+END_VAR
+
+PROGRAM Main
+VAR
+    Temp : REAL := 20.0;\t{ DE:\"Measured temperature\" }
+END_VAR
+{ SetFbVar(OUT, 1); }
+IF Temp < SetPoint - Hyst THEN Heater := TRUE; ELSIF Temp > SetPoint + Hyst THEN Heater := FALSE; END_IF;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("heater.st", src, 1, "Heater");
+    assert_eq!(column(&trace, "Heater"), vec![1.0], "{trace}");
+    let notes: Vec<&str> = stderr.lines().filter(|l| l.contains("W0301")).collect();
+    assert_eq!(notes.len(), 1, "{stderr}");
+    assert!(
+        notes[0].contains("heater.st:2:30: note[W0301]: description or attribute pragma `{ DE:\"Room setpoint\" }` is ignored (and the file's 4 others)"),
+        "{stderr}"
+    );
+    let code: Vec<&str> = stderr.lines().filter(|l| l.contains("W0300")).collect();
+    assert_eq!(code.len(), 1, "{stderr}");
+    assert!(code[0].contains("SetFbVar"), "{stderr}");
 }

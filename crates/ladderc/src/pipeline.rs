@@ -760,6 +760,8 @@ impl Session {
             &mut self.diags,
         );
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
+        // a file's description and attribute pragmas (`{ DE:"..." }` on each variable): one note
+        il_frontend::st::lexer::collapse_metadata_notes(&mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);
         // B&R: a program folder's _INIT, _CYCLIC, _EXIT and .var files are one program
