@@ -12,7 +12,9 @@
 //!   project);
 //! - description and attribute pragmas (`{ DE:"Heater relay" }`, `{s7.extern=ReadWrite}`) are one
 //!   W0301 note per file (before: W0300 "holds code that does not run" at each, 189 in one list);
-//!   Beremiz's C code stays W0300.
+//!   Beremiz's C code stays W0300;
+//! - a `.txt` or extensionless text of ST statements with no POU is read as ST: one E0307 (before:
+//!   read as IL, an error a line, 59 for one file); a `.txt` program in ST runs.
 
 mod common;
 use common::{check_files, check_text, column, in_dir, run_text, write_in};
@@ -210,4 +212,32 @@ END_PROGRAM
     let code: Vec<&str> = stderr.lines().filter(|l| l.contains("W0300")).collect();
     assert_eq!(code.len(), 1, "{stderr}");
     assert!(code[0].contains("SetFbVar"), "{stderr}");
+}
+
+/// IEC 61131-3 7.2 (IL) has no `:=` outside a call, no `;`, no `IF ... THEN ... END_IF`: a text of
+/// them is ST. With no POU around them it is one located E0307, in a `.txt` file as in an
+/// extensionless one; wrapped in a PROGRAM the `.txt` runs.
+#[test]
+fn a_text_of_st_statements_is_read_as_st() {
+    let body = "IF start THEN
+    lamp := TRUE;
+END_IF;
+count := count + 1;
+";
+    for name in ["plc_prog.txt", "plc_prog"] {
+        let (code, lines) = check_text(name, body);
+        assert_eq!(code, Some(1));
+        let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+        assert_eq!(errors.len(), 1, "{lines:#?}");
+        assert!(
+            errors[0].starts_with(&format!("{name}:1:1: error[E0307]: statements outside any POU")),
+            "{lines:#?}"
+        );
+    }
+    let program = format!(
+        "PROGRAM Main\nVAR start : BOOL := TRUE; lamp : BOOL; count : INT; END_VAR\n{body}END_PROGRAM\n"
+    );
+    let (trace, _) = run_text("main.txt", &program, 2, "Main.lamp,Main.count");
+    assert_eq!(column(&trace, "Main.lamp"), vec![1.0, 1.0], "{trace}");
+    assert_eq!(column(&trace, "Main.count"), vec![1.0, 2.0], "{trace}");
 }
