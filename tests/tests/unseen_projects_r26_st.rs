@@ -14,7 +14,10 @@
 //!   W0301 note per file (before: W0300 "holds code that does not run" at each, 189 in one list);
 //!   Beremiz's C code stays W0300;
 //! - a `.txt` or extensionless text of ST statements with no POU is read as ST: one E0307 (before:
-//!   read as IL, an error a line, 59 for one file); a `.txt` program in ST runs.
+//!   read as IL, an error a line, 59 for one file); a `.txt` program in ST runs;
+//! - a SIMOTION ST unit (`UNIT Name;`, `INTERFACE`, `IMPLEMENTATION`, `ARRAY[..]`) is one E0023 at
+//!   its `UNIT` line naming the dialect (before: read as IL lines, then an E0011 at each
+//!   `ARRAY[..]`: 53 errors over 6 files).
 
 mod common;
 use common::{check_files, check_text, column, in_dir, run_text, write_in};
@@ -63,7 +66,15 @@ END_PROGRAM
     let (code, out, err) = in_dir(
         dir.path(),
         &[
-            "run", "lib.st", "main.st", "--cycles", "1", "--trace", "-", "--watch", "Main.a,Main.b",
+            "run",
+            "lib.st",
+            "main.st",
+            "--cycles",
+            "1",
+            "--trace",
+            "-",
+            "--watch",
+            "Main.a,Main.b",
         ],
     );
     assert_eq!(code, Some(0), "{err}");
@@ -162,7 +173,9 @@ END_FUNCTION_BLOCK
     let enums: Vec<&String> = lines.iter().filter(|l| l.contains("E1001")).collect();
     assert_eq!(enums.len(), 1, "{lines:#?}");
     assert!(
-        enums[0].starts_with("a.st:6:10: error[E1001]: unknown enumeration `Area` (used 4 more times, not reported)"),
+        enums[0].starts_with(
+            "a.st:6:10: error[E1001]: unknown enumeration `Area` (used 4 more times, not reported)"
+        ),
         "{lines:#?}"
     );
     // one use alone: the message as before
@@ -230,7 +243,9 @@ count := count + 1;
         let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
         assert_eq!(errors.len(), 1, "{lines:#?}");
         assert!(
-            errors[0].starts_with(&format!("{name}:1:1: error[E0307]: statements outside any POU")),
+            errors[0].starts_with(&format!(
+                "{name}:1:1: error[E0307]: statements outside any POU"
+            )),
             "{lines:#?}"
         );
     }
@@ -240,4 +255,59 @@ count := count + 1;
     let (trace, _) = run_text("main.txt", &program, 2, "Main.lamp,Main.count");
     assert_eq!(column(&trace, "Main.lamp"), vec![1.0, 1.0], "{trace}");
     assert_eq!(column(&trace, "Main.count"), vec![1.0, 2.0], "{trace}");
+}
+
+/// SIMOTION ST is Siemens's motion-controller dialect: a unit with interface and implementation
+/// sections and dynamic arrays, not IEC 61131-3. One error per file, at `UNIT`, naming it; a valid
+/// file given with it adds none.
+#[test]
+fn a_simotion_unit_is_one_error_naming_the_dialect() {
+    let (code, lines) = check_files(&[
+        (
+            "mathunit.st",
+            "(* utilities *)
+UNIT MathUnit;
+
+INTERFACE
+    FUNCTION SumArray;
+END_INTERFACE
+
+IMPLEMENTATION
+    FUNCTION SumArray : LREAL
+        VAR_IN_OUT
+            data : ARRAY[..] OF LREAL;
+        END_VAR
+        VAR_TEMP
+            i : DINT;
+        END_VAR
+        SumArray := 0.0;
+        FOR i := 0 TO _lastIndexOf(in := data) DO
+            SumArray := SumArray + data[i];
+        END_FOR;
+    END_FUNCTION
+
+    FUNCTION MaxArray : LREAL
+        VAR_IN_OUT
+            data : ARRAY[..] OF LREAL;
+        END_VAR
+        MaxArray := data[0];
+    END_FUNCTION
+END_IMPLEMENTATION
+",
+        ),
+        (
+            "main.st",
+            "PROGRAM Main
+VAR x : INT; END_VAR
+x := x + 1;
+END_PROGRAM
+",
+        ),
+    ]);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:#?}");
+    assert!(
+        lines.iter().any(|l| l.starts_with("mathunit.st:2:1: error[E0023]: this file is a SIMOTION ST unit (`UNIT MathUnit`), not IEC 61131-3 Structured Text")),
+        "{lines:#?}"
+    );
 }

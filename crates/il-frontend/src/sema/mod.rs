@@ -166,7 +166,9 @@ impl Analyzer<'_> {
             };
             self.error(code::E1001, span, message)
                 .label("no such type")
-                .hint("declare it in a TYPE block (or give the library that declares it with --lib)");
+                .hint(
+                    "declare it in a TYPE block (or give the library that declares it with --lib)",
+                );
         }
     }
     pub(crate) fn error(

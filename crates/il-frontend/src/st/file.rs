@@ -1288,7 +1288,9 @@ pub fn parse_text(
     };
     let (mut toks, mut problems) = lex(src);
     if lang == Lang::St {
-        if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems) {
+        if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems)
+            .or_else(|| super::scl::simotion_unit(file, src, &toks))
+        {
             diags.push(d);
             return (CompilationUnit::default(), pending, Vec::new());
         }
