@@ -317,6 +317,8 @@ impl Session {
         let mut programs = std::collections::HashSet::new();
         // and their global variables: a POU's initial value reading one is computed at run time
         let mut globals = std::collections::HashSet::new();
+        // and their namespaces: `Plant.Util.Twice(21)` names another file's `NAMESPACE Plant.Util`
+        let mut namespaces = std::collections::HashSet::new();
         for p in paths.iter().filter(|p| !is_stdin(p)) {
             let text = match self.overlay.get(p) {
                 Some(t) => Some(t.clone()),
@@ -328,8 +330,10 @@ impl Session {
             if let Some(t) = text {
                 programs.extend(il_frontend::st::qualifiers::program_names(&t));
                 globals.extend(il_frontend::st::global_variable_names(&t));
+                namespaces.extend(il_frontend::st::qualifiers::namespace_names(&t));
             }
         }
+        let namespaces_before = il_frontend::st::qualifiers::set_project_namespaces(namespaces);
         let programs_before = il_frontend::st::qualifiers::set_project_programs(programs);
         let globals_before = il_frontend::st::set_project_globals(globals);
         // several PLCopen XML files (CODESYS exports one object per file), or XML beside text
@@ -766,11 +770,14 @@ impl Session {
             &mut self.diags,
         );
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
+        // a file's description and attribute pragmas (`{ DE:"..." }` on each variable): one note
+        il_frontend::st::lexer::collapse_metadata_notes(&mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
         il_frontend::actions::link(&mut units, &mut self.diags);
         // B&R: a program folder's _INIT, _CYCLIC, _EXIT and .var files are one program
         crate::br_programs::join(&mut units, &self.map, &mut self.diags);
         il_frontend::st::qualifiers::set_project_programs(programs_before);
+        il_frontend::st::qualifiers::set_project_namespaces(namespaces_before);
         il_frontend::st::set_project_globals(globals_before);
         units
     }

@@ -108,6 +108,8 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         integer_bits_pous: std::collections::HashSet::new(),
         loose_enum_pous: std::collections::HashSet::new(),
         copying_instance_pous: std::collections::HashSet::new(),
+        unknown_enums: Vec::new(),
+        unknown_enum_uses: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
     a.check_containment();
@@ -120,6 +122,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
     for (id, pou) in pous {
         a.check_body(id, pou);
     }
+    a.report_unknown_enums();
     a.model
 }
 
@@ -184,9 +187,32 @@ pub(crate) struct Analyzer<'d> {
     /// The declarations of the inputs whose W1411 (written inside their POU) was reported: once per
     /// input, at its first write.
     pub(crate) written_inputs: std::collections::HashSet<crate::Span>,
+    /// The unknown enumerations named in `Type#Value` (upper-case name, as written, first use, how
+    /// many other uses): one E1001 each at its first use, the other uses counted in its message
+    /// ([`Analyzer::report_unknown_enums`], once every body is checked).
+    pub(crate) unknown_enums: Vec<(String, String, crate::Span, usize)>,
+    /// The uses counted in `unknown_enums` (file, start): one ST statement lowered to several IL
+    /// instructions counts once.
+    pub(crate) unknown_enum_uses: std::collections::HashSet<(crate::FileId, u32)>,
 }
 
 impl Analyzer<'_> {
+    /// One E1001 per unknown enumeration of `Type#Value` (a vendor library's `ReadArea#Output`
+    /// used 8 times is one cause), at its first use, its message counting the other uses.
+    fn report_unknown_enums(&mut self) {
+        for (_, name, span, others) in std::mem::take(&mut self.unknown_enums) {
+            let message = match others {
+                0 => format!("unknown enumeration `{name}`"),
+                1 => format!("unknown enumeration `{name}` (used once more, not reported)"),
+                n => format!("unknown enumeration `{name}` (used {n} more times, not reported)"),
+            };
+            self.error(code::E1001, span, message)
+                .label("no such type")
+                .hint(
+                    "declare it in a TYPE block (or give the library that declares it with --lib)",
+                );
+        }
+    }
     pub(crate) fn error(
         &mut self,
         code: Code,

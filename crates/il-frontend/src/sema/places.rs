@@ -85,14 +85,19 @@ impl Body<'_, '_> {
 
     fn enum_value(&mut self, type_name: &ast::Ident, value: &ast::Ident) -> Type {
         let Some(&id) = self.a.type_names.get(&type_name.key()) else {
-            self.a
-                .error(
-                    code::E1001,
-                    type_name.span,
-                    format!("unknown enumeration `{}`", type_name.name),
-                )
-                .label("no such type")
-                .hint("declare it in a TYPE block");
+            // one cause, one error: its first use reported once every body is checked, with the
+            // count of the others (`Analyzer::report_unknown_enums`)
+            let span = type_name.span;
+            if !self.a.silent && self.a.unknown_enum_uses.insert((span.file, span.start)) {
+                let key = type_name.key();
+                match self.a.unknown_enums.iter_mut().find(|e| e.0 == key) {
+                    Some(e) => e.3 += 1,
+                    None => self
+                        .a
+                        .unknown_enums
+                        .push((key, type_name.name.clone(), span, 0)),
+                }
+            }
             return Type::Error;
         };
         match &self.a.model.types[id.0 as usize].def {

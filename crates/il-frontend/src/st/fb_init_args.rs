@@ -8,7 +8,7 @@
 //! instance as if they were not there), and the arguments of each declaration, read as the
 //! arguments of an ST call (so positional and named arguments and any expression are allowed), to
 //! be matched with the block's FB_init inputs once every file is read. Only declarations inside
-//! `VAR...END_VAR` blocks are looked at (`name : Type(` where `Type` is no elementary type:
+//! `VAR...END_VAR` blocks and `STRUCT...END_STRUCT` fields are looked at (`name : Type(` where `Type` is no elementary type:
 //! `STRING(20)`, `INT(0..10)` are lengths and subranges). Invariant: positions unchanged; the
 //! spans of the arguments are positions in the file.
 
@@ -61,9 +61,11 @@ pub(super) fn fb_init_arguments(
     let mut k = 0;
     while k < toks.len() {
         let t = &toks[k];
-        if VAR_KEYWORDS.iter().any(|w| is_word(src, t, w)) {
+        // (a STRUCT's fields too: `fb : FB_X(1, 2);` as a field, initialised with each
+        // instance of the structure, as TwinCAT and CODESYS do)
+        if VAR_KEYWORDS.iter().any(|w| is_word(src, t, w)) || is_word(src, t, "STRUCT") {
             in_vars = true;
-        } else if is_word(src, t, "END_VAR") {
+        } else if is_word(src, t, "END_VAR") || is_word(src, t, "END_STRUCT") {
             in_vars = false;
         }
         // `ARRAY [..] OF FB_X[(a := 1), (a := 2)]`: a list per element (CODESYS)

@@ -1229,7 +1229,8 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
 
 /// The language of a text given no file extension: XML when it starts with `<`, ST when one of its
 /// POU bodies is ST, or when it holds no POU but a `{` pragma (a CODESYS global variable list
-/// `{attribute 'qualified_only'} VAR_GLOBAL ...`: only the ST reader reads pragmas), IL otherwise.
+/// `{attribute 'qualified_only'} VAR_GLOBAL ...`: only the ST reader reads pragmas), or no POU but
+/// ST statements ([`body_lang`]), IL otherwise.
 pub fn detect(src: &str) -> Lang {
     let t = src.trim_start_matches('\u{feff}').trim_start();
     if t.starts_with('<') {
@@ -1240,6 +1241,12 @@ pub fn detect(src: &str) -> Lang {
     if pous.iter().any(|p| p.lang == Lang::St)
         || (pous.is_empty() && problems.iter().any(|p| matches!(p, Problem::Pragma(_))))
         || (pous.is_empty() && declarations_only(src, &toks, &stray))
+        // no POU, but ST statements (`IF start THEN` / `lamp := TRUE;` / `END_IF;`: a body
+        // exported alone): read as ST, whose reader reports them once (E0307), where IL's gave
+        // an error a line
+        || (pous.is_empty()
+            && toks.iter().any(|t| t.tok != Tok::Eof)
+            && body_lang(src, &toks) == Lang::St)
     {
         Lang::St
     } else {
@@ -1366,7 +1373,9 @@ pub fn parse_text(
     };
     let (mut toks, mut problems) = lex(src);
     if lang == Lang::St {
-        if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems) {
+        if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems)
+            .or_else(|| super::scl::simotion_unit(file, src, &toks))
+        {
             diags.push(d);
             return (CompilationUnit::default(), pending, Vec::new());
         }

@@ -640,6 +640,91 @@ pub fn is_redundancy_pragma(text: &str) -> bool {
         && inner.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
+/// Whether `text` (a pragma with its braces) is a description or attribute of its declaration:
+/// `{ key:"text" }` or `{key=value}`, one key (dotted parts allowed) and one value (a quoted
+/// string, or a word or number): CODESYS-based editors' descriptions (`{ DE:"Heater relay" }`,
+/// `{G:"EEPROM_Parameters"}`) and SIMATIC AX's attributes (`{s7.extern=ReadWrite}`). IEC 61131-3
+/// ed. 3 (6.2) leaves pragmas to the implementation; such a pair is metadata, no code (Beremiz's
+/// C code has statements: `;`, parentheses).
+pub fn is_metadata_pragma(text: &str) -> bool {
+    if text.starts_with("{{") {
+        return false;
+    }
+    let inner = text.trim_start_matches('{').trim_end_matches('}').trim();
+    let key_len = inner
+        .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_' || c == '.'))
+        .unwrap_or(inner.len());
+    let key = &inner[..key_len];
+    if key.is_empty()
+        || !key.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_')
+        || key.ends_with('.')
+    {
+        return false;
+    }
+    let rest = inner[key_len..].trim_start();
+    let Some(value) = rest.strip_prefix([':', '=']) else {
+        return false;
+    };
+    let value = value.trim();
+    let quoted = |q: char| {
+        value.len() >= 2
+            && value.starts_with(q)
+            && value.ends_with(q)
+            && !value[1..value.len() - 1].contains(q)
+    };
+    quoted('"')
+        || quoted('\'')
+        || (!value.is_empty()
+            && value
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | '#' | '-' | '+')))
+}
+
+/// The message prefix of the note of a description or attribute pragma ([`is_metadata_pragma`]):
+/// [`collapse_metadata_notes`] finds them by it.
+const METADATA_NOTE: &str = "description or attribute pragma";
+
+/// One note per file for its description and attribute pragmas ([`is_metadata_pragma`]; a
+/// CODESYS-based global list has one per variable): the first kept, its message naming how many
+/// others the file has.
+pub fn collapse_metadata_notes(diags: &mut diagnostics::Diagnostics) {
+    use std::collections::HashMap;
+    let is_meta = |d: &diagnostics::Diagnostic| {
+        d.code == diagnostics::code::W0301 && d.message.starts_with(METADATA_NOTE)
+    };
+    // per file: the first (by position) and the count of the others
+    let mut first: HashMap<crate::FileId, (diagnostics::Diagnostic, usize)> = HashMap::new();
+    for d in diags.iter().filter(|d| is_meta(d)) {
+        let Some(span) = d.span else { continue };
+        match first.get_mut(&span.file) {
+            Some((kept, n)) => {
+                *n += 1;
+                if kept.span.is_some_and(|k| span.start < k.start) {
+                    *kept = d.clone();
+                }
+            }
+            None => {
+                first.insert(span.file, (d.clone(), 0));
+            }
+        }
+    }
+    if first.values().all(|(_, n)| *n == 0) {
+        return;
+    }
+    diags.retain(|d| !is_meta(d) || d.span.is_some_and(|s| first[&s.file].1 == 0));
+    let mut kept: Vec<_> = first.into_values().filter(|(_, n)| *n > 0).collect();
+    kept.sort_by_key(|(d, _)| d.span.map(|s| (s.file, s.start)));
+    for (mut d, n) in kept {
+        // (in the message: a diagnostic equal to one already pushed is not pushed again)
+        d.message = if n == 1 {
+            format!("{} (and the file's other one)", d.message)
+        } else {
+            format!("{} (and the file's {n} others)", d.message)
+        };
+        diags.push(d);
+    }
+}
+
 /// Classifies the full text of a pragma (with its braces).
 pub fn pragma_kind(text: &str) -> PragmaKind {
     let inner = text
@@ -676,7 +761,10 @@ pub fn pragma_kind(text: &str) -> PragmaKind {
     // `{REDUND_UNREPLICABLE}` before a library's blocks and inputs): for its redundant controllers
     let redund = word.starts_with("redund_") && inner.trim_end().len() == word.len();
     if !text.starts_with("{{")
-        && (inner.trim().is_empty() || INFO.contains(&word.as_str()) || redund)
+        && (inner.trim().is_empty()
+            || INFO.contains(&word.as_str())
+            || redund
+            || is_metadata_pragma(text))
     {
         PragmaKind::Informational
     } else {
@@ -703,6 +791,13 @@ pub fn pragma_diagnostic(text: &str, span: crate::Span) -> diagnostics::Diagnost
             .at(span)
             .with_hint("close the pragma with `}` (`{attribute 'qualified_only'}`); ladderc reads neither attribute either way")
         }
+        PragmaKind::Informational if is_metadata_pragma(text) => Diagnostic::new(
+            code::W0301,
+            Severity::Note,
+            format!("{METADATA_NOTE} `{shown}` is ignored"),
+        )
+        .at(span)
+        .with_hint("a `{ key:\"text\" }` or `{key=value}` pragma describes its declaration (an editor's description, an export attribute); it changes nothing in the compiled program"),
         PragmaKind::Informational => Diagnostic::new(
             code::W0301,
             Severity::Note,

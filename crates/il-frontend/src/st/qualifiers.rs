@@ -49,6 +49,41 @@ thread_local! {
     /// [`with_other_files_names`]; empty otherwise.
     static OTHER_FILES_NAMES: std::cell::RefCell<std::collections::HashSet<String>> =
         Default::default();
+
+    /// The `NAMESPACE Name ... END_NAMESPACE` names of every file of the project (upper case,
+    /// dotted parts joined by `.`), set by [`set_project_namespaces`]: files given together are
+    /// one project, and a namespace is not tied to a file (IEC 61131-3 ed. 3, 6.9), so
+    /// `Plant.Util.Twice(21)` in one file names the function of another file's `NAMESPACE
+    /// Plant.Util`.
+    static PROJECT_NAMESPACES: std::cell::RefCell<std::collections::HashSet<String>> =
+        Default::default();
+}
+
+/// Sets the namespaces that `library_qualifiers` takes as the project's (every file's, from
+/// [`namespace_names`]); returns the ones set before, to put back when the project is read.
+pub fn set_project_namespaces(
+    names: std::collections::HashSet<String>,
+) -> std::collections::HashSet<String> {
+    PROJECT_NAMESPACES.with(|p| p.replace(names))
+}
+
+/// Whether `name` (upper case, dotted) is a namespace some file of the project declares.
+pub(super) fn is_project_namespace(name: &str) -> bool {
+    PROJECT_NAMESPACES.with(|p| p.borrow().contains(name))
+}
+
+/// The names of the `NAMESPACE Name ... END_NAMESPACE` blocks of `text` (an `.st` file), upper
+/// case, dotted parts joined by `.`: a scan before any file is parsed.
+pub fn namespace_names(text: &str) -> Vec<String> {
+    if !text
+        .as_bytes()
+        .windows(13)
+        .any(|w| w.eq_ignore_ascii_case(b"END_NAMESPACE"))
+    {
+        return Vec::new();
+    }
+    let toks = super::lexer::lex(text).0;
+    namespace_blocks(text, &toks, &mut None)
 }
 
 /// The namespaces of the user libraries read with the project (`Struckig` of `Struckig.Otg`),
@@ -251,7 +286,15 @@ pub(super) fn library_qualifiers(
     let mut text: Option<String> = None;
     // edition 3's `NAMESPACE Lib ... END_NAMESPACE` (6.9): the words blanked, so the POUs and
     // types inside are the file's, and `Lib.Name` names them as a provided library's name does
-    let namespaces = namespace_blocks(src, toks, &mut text);
+    let mut namespaces = namespace_blocks(src, toks, &mut text);
+    // and those of the project's other files (one project: a namespace spans its files)
+    PROJECT_NAMESPACES.with(|p| {
+        for n in p.borrow().iter() {
+            if !namespaces.contains(n) {
+                namespaces.push(n.clone());
+            }
+        }
+    });
     // the dotted ones by their parts (`Factory.Motion.Speed`)
     let dotted: Vec<Vec<&str>> = namespaces
         .iter()

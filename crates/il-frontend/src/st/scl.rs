@@ -68,3 +68,35 @@ pub(super) fn siemens_scl(
         .with_hint("write IEC 61131-3 ST: locals without `#`, data blocks as global variables (VAR_GLOBAL) or instances; the rest of the file is not compiled"),
     )
 }
+
+/// E0023 when the text is a SIMOTION ST unit: `UNIT Name;` first, then its `INTERFACE` or
+/// `IMPLEMENTATION` section (SIMOTION ST, Siemens's motion controllers: `USES`, `ARRAY[..]`
+/// dynamic arrays, none of it IEC 61131-3). At the `UNIT` line; the rest is not compiled.
+pub(super) fn simotion_unit(file: FileId, src: &str, toks: &[Token]) -> Option<Diagnostic> {
+    let word = |t: &Token, w: &str| {
+        src.get(t.range.clone())
+            .is_some_and(|x| x.eq_ignore_ascii_case(w))
+    };
+    let [unit, name, semi, ..] = toks else {
+        return None;
+    };
+    let header = word(unit, "UNIT") && name.tok == Tok::Ident && semi.tok == Tok::Semi;
+    let sections = toks[3..]
+        .iter()
+        .any(|t| word(t, "IMPLEMENTATION") || word(t, "INTERFACE"));
+    if !(header && sections) {
+        return None;
+    }
+    Some(
+        Diagnostic::error(
+            code::E0023,
+            format!(
+                "this file is a SIMOTION ST unit (`UNIT {}`), not IEC 61131-3 Structured Text",
+                &src[name.range.clone()]
+            ),
+        )
+        .at(Span::new(file, unit.range.start, semi.range.end))
+        .with_primary_label("SIMOTION ST, not IEC 61131-3")
+        .with_hint("write the unit's POUs as IEC 61131-3 ST: the FUNCTIONs and FUNCTION_BLOCKs of its IMPLEMENTATION without UNIT, INTERFACE, USES and IMPLEMENTATION, arrays with their bounds (`ARRAY[0..9] OF LREAL`, not `ARRAY[..]`); the rest of the file is not compiled"),
+    )
+}

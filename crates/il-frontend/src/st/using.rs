@@ -81,6 +81,10 @@ pub(super) fn namespace_imports(
                 name.eq_ignore_ascii_case(n)
             })
         };
+        // (or another file of the project does: one project, `qualifiers::set_project_namespaces`)
+        let declared = |n: &String| {
+            declared(n) || super::qualifiers::is_project_namespace(&n.to_ascii_uppercase())
+        };
         if names.iter().all(declared) {
             let text = out.get_or_insert_with(|| src.to_string());
             text.replace_range(range.clone(), &" ".repeat(range.len()));
