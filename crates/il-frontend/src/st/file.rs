@@ -84,6 +84,9 @@ pub struct PouText {
     /// Not a POU: an `INTERFACE name ... END_INTERFACE` block (edition 3: its methods are in
     /// `methods`, checked against the blocks that implement it; `body` is the whole block).
     pub interface: Option<Range<usize>>,
+    /// A `CLASS ... END_CLASS` (edition 3, 6.6.5): read as a function block without a body, the
+    /// range of its `CLASS` keyword ([`super::classes`]).
+    pub class: Option<Range<usize>>,
 }
 
 /// One `METHOD [modifiers] Name [: Type] <VAR blocks> <statements> END_METHOD` of a function block.
@@ -395,12 +398,22 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     heritage,
                     header_semi: None,
                     interface: Some(start.start..name_tok.range.end),
+                    class: None,
                 });
                 i = j;
             }
             _ if is_var_keyword(&w) => i = skip_to(i + 1, "END_VAR"),
-            "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" => {
+            "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" | "CLASS"
+                if w != "CLASS" || toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident) =>
+            {
                 let end_word = format!("END_{w}");
+                // `CLASS Name ... END_CLASS`: a function block without a body (`classes`)
+                let class = (w == "CLASS").then(|| t.range.clone());
+                let w = if class.is_some() {
+                    "FUNCTION_BLOCK".to_string()
+                } else {
+                    w
+                };
                 i += 1;
                 // `FUNCTION_BLOCK PUBLIC FB_Brake` (CODESYS access specifier; FINAL and ABSTRACT of
                 // edition 3), `PROGRAM INTERNAL MAIN` (TwinCAT): the modifier is not the name
@@ -575,6 +588,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     heritage,
                     header_semi,
                     interface: None,
+                    class,
                 });
                 i = j + 1;
             }
@@ -1207,6 +1221,7 @@ fn actions_text(
         heritage: None,
         header_semi: None,
         interface: None,
+        class: None,
     }
 }
 
@@ -1300,7 +1315,7 @@ pub fn parse_text(
     let mut references = RefTypes::default();
     // the structure fields named with a keyword (`keyword_declarations`)
     let mut keyword_fields = Vec::new();
-    let (uninstanced, unextended, unstatic, unclassed): (String, String, String, String);
+    let (uninstanced, unextended, unstatic): (String, String, String);
     let mut stat_at = Vec::new();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
@@ -1364,15 +1379,6 @@ pub fn parse_text(
                 unqualified = t;
                 (toks, problems) = lex(&unqualified);
                 unqualified.as_str()
-            }
-            None => src,
-        };
-        // `CLASS ... END_CLASS` (ed. 3): one E1076 each, blanked (`using`)
-        let src = match super::using::classes(file, src, &toks, diags) {
-            Some(t) => {
-                unclassed = t;
-                (toks, problems) = lex(&unclassed);
-                unclassed.as_str()
             }
             None => src,
         };

@@ -836,6 +836,42 @@ impl Rewrite<'_> {
             if toks[k].tok != Tok::Ident || !word(k).eq_ignore_ascii_case("SUPER") {
                 continue;
             }
+            // `SUPER.M(...)`, `SUPER.x`: edition 3's spelling (6.6.5, SIMATIC AX) of `SUPER^.M`
+            // in a derived block, read so (the hidden name takes the blank before `SUPER`)
+            let dotted = level > 0
+                && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Dot)
+                && adjacent(k, k + 1)
+                && toks.get(k + 2).is_some_and(|t| t.tok == Tok::Ident)
+                && adjacent(k + 1, k + 2);
+            if dotted {
+                let name = word(k + 2).to_ascii_uppercase();
+                let start = toks[k].range.start;
+                let visible = self.versions.get(&name).and_then(|v| {
+                    let last = v.last()?.0;
+                    let at = v.iter().rev().find(|(l, _, _)| *l < level)?.0;
+                    Some((at, last))
+                });
+                let blank_before = start > 0
+                    && matches!(text.as_bytes().get(start - 1), Some(b' ' | b'\t'));
+                match visible {
+                    Some((at, last)) if at != last && blank_before => {
+                        self.needed.push(Hidden::Method(at, name.clone()));
+                        out.replace_range(start - 1..toks[k + 1].range.end, &format!("__S{at:03}_"));
+                    }
+                    Some((at, last)) if at != last => diags.push(
+                        Diagnostic::error(
+                            code::E0108,
+                            format!("`SUPER.{}` right after another word: not compiled", word(k + 2)),
+                        )
+                        .at(Span::new(file, base + start, base + toks[k + 1].range.end))
+                        .with_primary_label("no blank before SUPER")
+                        .with_hint("write a blank before SUPER (`x := SUPER.M();`), or `SUPER^.M()`"),
+                    ),
+                    // the block's own version, or a variable of a base (the block has it)
+                    _ => out.replace_range(start..toks[k + 1].range.end, "      "),
+                }
+                continue;
+            }
             if toks.get(k + 1).map(|t| &t.tok) != Some(&Tok::Caret) || !adjacent(k, k + 1) {
                 continue;
             }
