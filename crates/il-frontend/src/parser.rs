@@ -745,6 +745,7 @@ impl<'s> Ctx<'s> {
             }
         }
         Pou {
+            class: false,
             kind,
             name,
             return_type: if kind == PouKind::Function {
@@ -1084,6 +1085,7 @@ impl<'s> Ctx<'s> {
             }
         }
         VarBlock {
+            access: None,
             name: None,
             kind,
             constant: quals.contains(&Word::Constant),

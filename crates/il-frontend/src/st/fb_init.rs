@@ -439,6 +439,7 @@ pub fn add_init_calls(
         return;
     };
     let mut hidden = Pou {
+        class: false,
         kind: PouKind::Program,
         name: Ident::new(PROGRAM, span),
         return_type: None,

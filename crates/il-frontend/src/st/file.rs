@@ -1468,7 +1468,7 @@ pub fn parse_text(
     // `VAR PUBLIC` (IEC 61131-3 ed. 3 access specifiers of a block's variables, Siemens AX): the
     // word changes nothing in one project (a variable named so, `VAR public : BOOL`, stays)
     // (also after the block's qualifiers: `VAR RETAIN PUBLIC`, `VAR CONSTANT PRIVATE`)
-    let var_specifiers: Vec<std::ops::Range<usize>> = (0..toks.len())
+    let var_specifiers: Vec<(std::ops::Range<usize>, usize)> = (0..toks.len())
         .filter(|&k| is_word(src, &toks[k], "VAR"))
         .filter_map(|k| {
             let mut j = k + 1;
@@ -1485,7 +1485,7 @@ pub fn parse_text(
                 .iter()
                 .any(|m| is_word(src, spec, m))
                 && !matches!(after.tok, Tok::Colon | Tok::Comma))
-            .then(|| spec.range.clone())
+            .then(|| (spec.range.clone(), toks[k].range.start))
         })
         .collect();
     drop(toks);
@@ -1605,8 +1605,35 @@ pub fn parse_text(
             blank(&mut text, r);
         }
     }
-    for r in &var_specifiers {
+    // the access specifiers of a class's and a function block's own blocks are kept (set on the
+    // parsed blocks: `classes::set_access`); elsewhere (a PROGRAM's, a FUNCTION's) ignored
+    let in_block = |at: usize| {
+        pous.iter().any(|p| {
+            p.name_range.end <= at
+                && at < p.body.end
+                && p.actions.is_none()
+                && p.interface.is_none()
+                && src
+                    .get(..p.modifier.as_ref().map_or(p.name_range.start, |m| m.start))
+                    .and_then(|h| h.split_whitespace().last())
+                    .is_some_and(|k| {
+                        k.eq_ignore_ascii_case("FUNCTION_BLOCK") || k.eq_ignore_ascii_case("CLASS")
+                    })
+        })
+    };
+    let mut kept_access: Vec<(usize, crate::ast::Access)> = Vec::new();
+    for (r, var_at) in &var_specifiers {
         let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
+        if in_block(*var_at) {
+            let access = match m.as_str() {
+                "PRIVATE" => crate::ast::Access::Private,
+                "PROTECTED" => crate::ast::Access::Protected,
+                _ => crate::ast::Access::Public,
+            };
+            kept_access.push((*var_at, access));
+            blank(&mut text, r.clone());
+            continue;
+        }
         diags.push(
             Diagnostic::warning(
                 code::W0304,
@@ -2093,6 +2120,7 @@ pub fn parse_text(
     references.settle_initial_values(&mut text, &computed);
     let mut local = Diagnostics::new();
     let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    super::classes::set_access(&mut unit, file, src, &pous, &kept_access, &mut local);
     super::var_stat::name_blocks(&mut unit, file, &stat_at);
     restore_field_names(&mut unit, &keyword_fields);
     references.apply(&mut unit, &mut local);
@@ -2581,6 +2609,7 @@ pub fn add_method_vars(
     ] {
         if !vars.is_empty() {
             p.var_blocks.push(VarBlock {
+                access: None,
                 name,
                 kind,
                 constant: false,
