@@ -124,7 +124,7 @@ pub fn add_init_calls(
         }
     }
     for b in blocks.values_mut() {
-        // `__S000_...` before `__S001_...`: root first
+        // `__S00_...` before `__S01_...`: root first
         b.bases.sort();
     }
     // `{attribute 'call_after_init'}` methods: no inputs (CODESYS, TwinCAT: a compile error)

@@ -616,10 +616,16 @@ fn body_of<'p>(c: &Class, pending: &'p [PendingBody]) -> Option<&'p PendingBody>
 
 /// The hidden name of the version of method `m` defined at level `level` of a chain.
 fn super_method(level: usize, m: &str) -> String {
-    format!("__S{level:03}_{}", m.to_ascii_uppercase())
+    format!("__S{level:02}_{}", m.to_ascii_uppercase())
 }
 
 /// The hidden name of the body of level `level` of a chain, run by `SUPER^()`.
+/// `__S<level>_`, the start of the hidden name of a method's version at `level` (two digits: a
+/// chain is at most [`MAX_DEPTH`] long), as long as `SUPER.` (`SUPER^.` is one byte longer).
+fn hidden_prefix(level: usize) -> String {
+    format!("__S{level:02}_")
+}
+
 fn super_body(level: usize) -> String {
     format!("__B{level:03}")
 }
@@ -837,7 +843,7 @@ impl Rewrite<'_> {
                 continue;
             }
             // `SUPER.M(...)`, `SUPER.x`: edition 3's spelling (6.6.5, SIMATIC AX) of `SUPER^.M`
-            // in a derived block, read so (the hidden name takes the blank before `SUPER`)
+            // in a derived block, read so
             let dotted = level > 0
                 && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Dot)
                 && adjacent(k, k + 1)
@@ -851,22 +857,11 @@ impl Rewrite<'_> {
                     let at = v.iter().rev().find(|(l, _, _)| *l < level)?.0;
                     Some((at, last))
                 });
-                let blank_before = start > 0
-                    && matches!(text.as_bytes().get(start - 1), Some(b' ' | b'\t'));
                 match visible {
-                    Some((at, last)) if at != last && blank_before => {
+                    Some((at, last)) if at != last => {
                         self.needed.push(Hidden::Method(at, name.clone()));
-                        out.replace_range(start - 1..toks[k + 1].range.end, &format!("__S{at:03}_"));
+                        out.replace_range(start..toks[k + 1].range.end, &hidden_prefix(at));
                     }
-                    Some((at, last)) if at != last => diags.push(
-                        Diagnostic::error(
-                            code::E0108,
-                            format!("`SUPER.{}` right after another word: not compiled", word(k + 2)),
-                        )
-                        .at(Span::new(file, base + start, base + toks[k + 1].range.end))
-                        .with_primary_label("no blank before SUPER")
-                        .with_hint("write a blank before SUPER (`x := SUPER.M();`), or `SUPER^.M()`"),
-                    ),
                     // the block's own version, or a variable of a base (the block has it)
                     _ => out.replace_range(start..toks[k + 1].range.end, "      "),
                 }
@@ -901,7 +896,7 @@ impl Rewrite<'_> {
                     let replacement = match visible {
                         Some((at, last)) if at != last => {
                             self.needed.push(Hidden::Method(at, name.clone()));
-                            format!("__S{at:03}_")
+                            format!(" {}", hidden_prefix(at))
                         }
                         // the block's own version, or a variable of a base (the block has it)
                         _ => "       ".to_string(),
