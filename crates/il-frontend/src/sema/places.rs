@@ -1150,7 +1150,8 @@ impl Body<'_, '_> {
                         if let (Some(a @ (Access::Private | Access::Protected)), false) =
                             (access, inside)
                         {
-                            let kind = if matches!(fb, FbType::User(id) if self.a.model.pous[id.0 as usize].class) {
+                            let kind = if matches!(fb, FbType::User(id) if self.a.model.pous[id.0 as usize].class)
+                            {
                                 "class"
                             } else {
                                 "function block"

@@ -187,4 +187,3 @@ pub(super) fn typed_tasks(
     }
     out
 }
-
