@@ -150,6 +150,7 @@ END_PROGRAM
     let (units, model, map) = frontend_with(src, |u, f| {
         let sp = diagnostics::Span::new(f, 0, 0);
         let globals = vec![VarBlock {
+            access: None,
             name: None,
             kind: VarKind::Global,
             constant: false,
@@ -233,6 +234,7 @@ fn global(f: diagnostics::FileId, name: &str, ty: &str, init: Option<i128>) -> V
 
 fn globals(f: diagnostics::FileId, vars: Vec<VarDecl>) -> Vec<VarBlock> {
     vec![VarBlock {
+        access: None,
         name: None,
         kind: VarKind::Global,
         constant: false,

@@ -73,10 +73,12 @@ fn big_program(lines: usize) -> CompilationUnit {
     };
     CompilationUnit {
         items: vec![LibraryElement::Pou(Pou {
+            class: false,
             kind: PouKind::Program,
             name: Ident::new("big", sp(1)),
             return_type: None,
             var_blocks: vec![VarBlock {
+                access: None,
                 name: None,
                 kind: VarKind::Local,
                 constant: false,

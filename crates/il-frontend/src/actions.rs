@@ -217,6 +217,7 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             body.append(&mut tail);
             p.body = body;
             p.var_blocks.push(VarBlock {
+                access: None,
                 name: None,
                 kind: VarKind::Input,
                 constant: false,

@@ -711,6 +711,34 @@ pub struct VarBlock {
     pub vars: Vec<VarDecl>,
     /// From the section keyword to `END_VAR`.
     pub span: Span,
+    /// The access specifier of a class's or function block's variable block (IEC 61131-3 ed. 3,
+    /// 6.6.5: `VAR PUBLIC`, `VAR PRIVATE` ...; a class's `VAR` without one is PROTECTED): a
+    /// PRIVATE or PROTECTED variable is not reachable as `inst.x` from another POU, a PUBLIC
+    /// one is (no W1412). `None` for every other block (a function block's plain `VAR`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub access: Option<Access>,
+}
+
+/// A restricting access specifier of a variable block (IEC 61131-3 ed. 3, 6.6.5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize)]
+pub enum Access {
+    /// `PUBLIC`, or `INTERNAL` (the namespace is the whole project): reachable from anywhere.
+    Public,
+    /// `PRIVATE`: only inside the class (or function block) that declares it.
+    Private,
+    /// `PROTECTED`: inside the class and the classes that extend it.
+    Protected,
+}
+
+impl Access {
+    /// The keyword (`PRIVATE`, `PROTECTED`).
+    pub fn keyword(self) -> &'static str {
+        match self {
+            Access::Public => "PUBLIC",
+            Access::Private => "PRIVATE",
+            Access::Protected => "PROTECTED",
+        }
+    }
 }
 
 impl VarBlock {
@@ -718,6 +746,7 @@ impl VarBlock {
     /// add for the hidden variables they introduce (SFC step flags, action flags, temporaries).
     pub fn locals(vars: Vec<VarDecl>, span: Span) -> VarBlock {
         VarBlock {
+            access: None,
             name: None,
             kind: VarKind::Local,
             constant: false,
@@ -846,6 +875,10 @@ pub struct Pou {
     pub body: Vec<IlStmt>,
     /// From the POU keyword to `END_*`.
     pub span: Span,
+    /// Declared `CLASS ... END_CLASS` (IEC 61131-3 ed. 3, 6.6.5): a function block without a body,
+    /// whose instances are not called (`inst();` is E1018), only their methods.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub class: bool,
 }
 
 /// A body is a list of labels and instructions (a label may stand alone on its line, or before `END_*`).

@@ -616,6 +616,22 @@ impl<'s> Layout<'s> {
                 {
                     return Tok::Word(Word::EndStruct);
                 }
+                // `CLASS Name ... END_CLASS` (IEC 61131-3 ed. 3, 6.6.5) is read as a function
+                // block without a body (`st::classes` checks what a class may not hold): CLASS
+                // at the start of a line outside any declaration, END_CLASS inside a POU;
+                // elsewhere (`Class : INT;`, `r.Class`) either stays a name
+                if text.eq_ignore_ascii_case("CLASS")
+                    && !top.is_some_and(|f| f.is_decl())
+                    && (matches!(self.prev, Last::Start | Last::Eol) || self.pending_eol.is_some())
+                    && !self.colon_follows(e)
+                {
+                    return Tok::Word(Word::FunctionBlock);
+                }
+                if text.eq_ignore_ascii_case("END_CLASS")
+                    && self.stack.iter().any(|f| matches!(f, Frame::Pou(..)))
+                {
+                    return Tok::Word(Word::EndFunctionBlock);
+                }
                 match crate::lexer::classify(text) {
                     w if !w.is_name()
                         && !self.declared.is_empty()

@@ -91,6 +91,7 @@ pub fn parse_named(
         diags.push(parser::implicit_program_warning(first, implicit_name));
         let end = Span::new(file, src.len(), src.len());
         let pou = Pou {
+            class: false,
             kind: PouKind::Program,
             name: Ident::new(
                 implicit_name,

@@ -806,6 +806,7 @@ impl<'s> Ctx<'s> {
             }
         }
         Pou {
+            class: false,
             kind,
             name,
             return_type: if kind == PouKind::Function {
@@ -1145,6 +1146,7 @@ impl<'s> Ctx<'s> {
             }
         }
         VarBlock {
+            access: None,
             name: None,
             kind,
             constant: quals.contains(&Word::Constant),

@@ -542,6 +542,7 @@ fn operators_without_their_operand_in_a_built_tree() {
     };
     let unit = CompilationUnit {
         items: vec![LibraryElement::Pou(Pou {
+            class: false,
             kind: PouKind::Program,
             name: Ident::new("P", s(0, 1)),
             return_type: None,

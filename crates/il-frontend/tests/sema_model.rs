@@ -468,10 +468,12 @@ fn configuration_tasks_and_program_instances() {
     let s = Span::default;
     let id = |n: &str| ast::Ident::new(n, s());
     let prog = ast::Pou {
+        class: false,
         kind: PouKind::Program,
         name: id("Main"),
         return_type: None,
         var_blocks: vec![ast::VarBlock {
+            access: None,
             name: None,
             kind: VarKind::External,
             constant: false,
@@ -493,6 +495,7 @@ fn configuration_tasks_and_program_instances() {
         name: id("Cell"),
         access: Vec::new(),
         globals: vec![ast::VarBlock {
+            access: None,
             name: None,
             kind: VarKind::Global,
             constant: false,

@@ -230,6 +230,7 @@ pub fn add_globals(unit: &mut CompilationUnit, vars: Vec<VarDecl>) {
         return;
     };
     let block = VarBlock {
+        access: None,
         name: None,
         kind: VarKind::Global,
         constant: false,

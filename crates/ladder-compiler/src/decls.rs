@@ -564,6 +564,7 @@ pub fn var_block(ctx: &mut Ctx, list: &Element, kind: VarKind) -> VarBlock {
         None
     };
     VarBlock {
+        access: None,
         name,
         kind,
         constant: flag("constant"),

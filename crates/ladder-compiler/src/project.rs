@@ -766,6 +766,7 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
         );
     }
     Some(Pou {
+        class: false,
         kind,
         name,
         return_type,

@@ -109,6 +109,7 @@ pub(crate) fn add_hidden_vars(
 ) {
     let span = pou.name.span;
     pou.var_blocks.push(VarBlock {
+        access: None,
         name: None,
         kind: VarKind::Local,
         constant: false,

@@ -94,6 +94,7 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
                 }
                 own_files.push(file);
                 blocks.push(VarBlock {
+                    access: None,
                     name: None,
                     kind: VarKind::Local,
                     ..b.clone()

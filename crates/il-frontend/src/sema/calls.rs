@@ -1229,6 +1229,30 @@ impl Body<'_, '_> {
             },
             (None, None) => self.resolve_var(instance),
         };
+        // an instance of a CLASS (IEC 61131-3 ed. 3, 6.6.5) has no body to call: only its
+        // methods are called (`inst.M()`, linked to a call with an `__ACTION_` flag)
+        if let Type::Fb(FbType::User(id)) = place.ty {
+            let method = matches!(args, CallArgs::Formal(list) if list
+                .iter()
+                .any(|a| a.name.name.starts_with(crate::actions::FLAG_PREFIX)));
+            let class = &self.a.model.pous[id.0 as usize];
+            if class.class && !method {
+                let name = class.name.clone();
+                self.a
+                    .error(
+                        code::E1018,
+                        instance.span,
+                        format!(
+                            "`{}` is an instance of the class {name}: a class is not called, its methods are",
+                            instance.base.name
+                        ),
+                    )
+                    .label("an instance of a CLASS")
+                    .hint(format!("call one of its methods (`{}.M();`), or declare {name} a FUNCTION_BLOCK to give it a body", instance.base.name));
+                self.args_unchecked(args);
+                return;
+            }
+        }
         match place.ty {
             Type::Fb(fb) => {
                 rec.callee = Some(Callee::FbInstance { fb, input: None });

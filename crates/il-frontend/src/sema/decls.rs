@@ -121,6 +121,13 @@ impl Analyzer<'_> {
                             externals: Vec::new(),
                             instrs: Vec::new(),
                             var_index: Default::default(),
+                            class: p.class,
+                            access: p
+                                .var_blocks
+                                .iter()
+                                .filter_map(|b| Some((b, b.access?)))
+                                .flat_map(|(b, a)| b.vars.iter().map(move |v| (v.name.key(), a)))
+                                .collect(),
                         });
                         pous.push((id, p));
                     }
@@ -156,6 +163,7 @@ impl Analyzer<'_> {
                 continue; // a duplicate
             }
             let blocks = [VarBlock {
+                access: None,
                 name: None,
                 kind: VarKind::Local,
                 constant: false,

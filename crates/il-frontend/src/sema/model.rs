@@ -902,6 +902,14 @@ pub struct Pou {
     /// from a table small enough to stay in the cache ([`crate::name_index`]).
     #[serde(skip)]
     pub var_index: crate::name_index::NameIndex,
+    /// Declared `CLASS` (IEC 61131-3 ed. 3, 6.6.5): its instances are not called, only their
+    /// methods.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub class: bool,
+    /// The access specifiers of its variables (upper-case name), as [`crate::ast::VarBlock::access`]
+    /// gives them: a PRIVATE or PROTECTED one is not reached as `inst.x` from another POU.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub access: Vec<(String, crate::ast::Access)>,
 }
 
 /// Calls `f` with the ASCII upper-case form of `name` (the key of the name tables), without allocating
@@ -2251,6 +2259,8 @@ mod var_index_tests {
             externals: Vec::new(),
             instrs: Vec::new(),
             var_index: Default::default(),
+            class: false,
+            access: Vec::new(),
         };
         pou.set_vars(vars);
         pou

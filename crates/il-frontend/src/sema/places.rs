@@ -10,7 +10,7 @@ use super::body::{Body, Ty};
 use super::model::*;
 use super::stdlib::{fb_params, Dir};
 use super::typing::{assignable, literal_type, BindError, LitType};
-use crate::ast::{self, Accessor, Area, Operand, PouKind, VarKind, VarRef};
+use crate::ast::{self, Access, Accessor, Area, Operand, PouKind, VarKind, VarRef};
 use crate::Span;
 use diagnostics::{code, Code, Diagnostic, Severity};
 
@@ -1140,9 +1140,45 @@ impl Body<'_, '_> {
                     .find(|p| f.is(&p.0) || alias == Some(p.0.as_str()))
                 {
                     Some((_, dir, ty)) => {
+                        // `VAR PRIVATE` / `VAR PROTECTED` of a class or block (IEC 61131-3 ed. 3,
+                        // 6.6.5; a class's VAR without a specifier is PROTECTED): reached only
+                        // from inside it; `VAR PUBLIC` from anywhere, without W1412
+                        let access = match fb {
+                            FbType::User(id) => self.a.model.pous[id.0 as usize]
+                                .access
+                                .iter()
+                                .find(|(n, _)| f.is(n))
+                                .map(|(_, a)| *a),
+                            FbType::Standard(_) => None,
+                        };
+                        let inside = matches!(fb, FbType::User(id) if id.0 == self.pou.0);
+                        if let (Some(a @ (Access::Private | Access::Protected)), false) =
+                            (access, inside)
+                        {
+                            let kind = if matches!(fb, FbType::User(id) if self.a.model.pous[id.0 as usize].class)
+                            {
+                                "class"
+                            } else {
+                                "function block"
+                            };
+                            self.a
+                                .error(
+                                    code::E1021,
+                                    f.span,
+                                    format!(
+                                        "`{}` is a {} variable of {kind} {tname}: not reachable from outside it",
+                                        f.name,
+                                        a.keyword()
+                                    ),
+                                )
+                                .label(format!("{} to {tname}", a.keyword()))
+                                .hint(format!("read or write it in a method of {tname} (`inst.GetX()`), or declare it in a `VAR PUBLIC` block"));
+                            return None;
+                        }
                         let read_only = match dir {
                             ParamDir::Output => Some(ReadOnly::FbOutput { at }),
                             ParamDir::Input | ParamDir::InOut => place.read_only,
+                            ParamDir::Internal if access == Some(Access::Public) => place.read_only,
                             ParamDir::Internal => {
                                 // CODESYS and TwinCAT give access to internal variables (W1412,
                                 // once per POU, block type and variable)

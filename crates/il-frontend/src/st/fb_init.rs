@@ -124,7 +124,7 @@ pub fn add_init_calls(
         }
     }
     for b in blocks.values_mut() {
-        // `__S000_...` before `__S001_...`: root first
+        // `__S00_...` before `__S01_...`: root first
         b.bases.sort();
     }
     // `{attribute 'call_after_init'}` methods: no inputs (CODESYS, TwinCAT: a compile error)
@@ -439,6 +439,7 @@ pub fn add_init_calls(
         return;
     };
     let mut hidden = Pou {
+        class: false,
         kind: PouKind::Program,
         name: Ident::new(PROGRAM, span),
         return_type: None,

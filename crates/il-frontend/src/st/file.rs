@@ -84,6 +84,9 @@ pub struct PouText {
     /// Not a POU: an `INTERFACE name ... END_INTERFACE` block (edition 3: its methods are in
     /// `methods`, checked against the blocks that implement it; `body` is the whole block).
     pub interface: Option<Range<usize>>,
+    /// A `CLASS ... END_CLASS` (edition 3, 6.6.5): read as a function block without a body, the
+    /// range of its `CLASS` keyword ([`super::classes`]).
+    pub class: Option<Range<usize>>,
 }
 
 /// One `METHOD [modifiers] Name [: Type] <VAR blocks> <statements> END_METHOD` of a function block.
@@ -404,12 +407,22 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     heritage,
                     header_semi: None,
                     interface: Some(start.start..name_tok.range.end),
+                    class: None,
                 });
                 i = j;
             }
             _ if is_var_keyword(&w) => i = skip_to(i + 1, "END_VAR"),
-            "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" => {
+            "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" | "CLASS"
+                if w != "CLASS" || toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident) =>
+            {
                 let end_word = format!("END_{w}");
+                // `CLASS Name ... END_CLASS`: a function block without a body (`classes`)
+                let class = (w == "CLASS").then(|| t.range.clone());
+                let w = if class.is_some() {
+                    "FUNCTION_BLOCK".to_string()
+                } else {
+                    w
+                };
                 i += 1;
                 // `FUNCTION_BLOCK PUBLIC FB_Brake` (CODESYS access specifier; FINAL and ABSTRACT of
                 // edition 3), `PROGRAM INTERNAL MAIN` (TwinCAT): the modifier is not the name
@@ -584,6 +597,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                     heritage,
                     header_semi,
                     interface: None,
+                    class,
                 });
                 i = j + 1;
             }
@@ -1299,6 +1313,7 @@ fn actions_text(
         heritage: None,
         header_semi: None,
         interface: None,
+        class: None,
     }
 }
 
@@ -1394,7 +1409,7 @@ pub fn parse_text(
     let mut references = RefTypes::default();
     // the structure fields named with a keyword (`keyword_declarations`)
     let mut keyword_fields = Vec::new();
-    let (uninstanced, unextended, unstatic, unclassed): (String, String, String, String);
+    let (uninstanced, unextended, unstatic): (String, String, String);
     let mut stat_at = Vec::new();
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
@@ -1458,15 +1473,6 @@ pub fn parse_text(
                 unqualified = t;
                 (toks, problems) = lex(&unqualified);
                 unqualified.as_str()
-            }
-            None => src,
-        };
-        // `CLASS ... END_CLASS` (ed. 3): one E1076 each, blanked (`using`)
-        let src = match super::using::classes(file, src, &toks, diags) {
-            Some(t) => {
-                unclassed = t;
-                (toks, problems) = lex(&unclassed);
-                unclassed.as_str()
             }
             None => src,
         };
@@ -1556,7 +1562,7 @@ pub fn parse_text(
     // `VAR PUBLIC` (IEC 61131-3 ed. 3 access specifiers of a block's variables, Siemens AX): the
     // word changes nothing in one project (a variable named so, `VAR public : BOOL`, stays)
     // (also after the block's qualifiers: `VAR RETAIN PUBLIC`, `VAR CONSTANT PRIVATE`)
-    let var_specifiers: Vec<std::ops::Range<usize>> = (0..toks.len())
+    let var_specifiers: Vec<(std::ops::Range<usize>, usize)> = (0..toks.len())
         .filter(|&k| is_word(src, &toks[k], "VAR"))
         .filter_map(|k| {
             let mut j = k + 1;
@@ -1573,7 +1579,7 @@ pub fn parse_text(
                 .iter()
                 .any(|m| is_word(src, spec, m))
                 && !matches!(after.tok, Tok::Colon | Tok::Comma))
-            .then(|| spec.range.clone())
+            .then(|| (spec.range.clone(), toks[k].range.start))
         })
         .collect();
     drop(toks);
@@ -1693,8 +1699,35 @@ pub fn parse_text(
             blank(&mut text, r);
         }
     }
-    for r in &var_specifiers {
+    // the access specifiers of a class's and a function block's own blocks are kept (set on the
+    // parsed blocks: `classes::set_access`); elsewhere (a PROGRAM's, a FUNCTION's) ignored
+    let in_block = |at: usize| {
+        pous.iter().any(|p| {
+            p.name_range.end <= at
+                && at < p.body.end
+                && p.actions.is_none()
+                && p.interface.is_none()
+                && src
+                    .get(..p.modifier.as_ref().map_or(p.name_range.start, |m| m.start))
+                    .and_then(|h| h.split_whitespace().last())
+                    .is_some_and(|k| {
+                        k.eq_ignore_ascii_case("FUNCTION_BLOCK") || k.eq_ignore_ascii_case("CLASS")
+                    })
+        })
+    };
+    let mut kept_access: Vec<(usize, crate::ast::Access)> = Vec::new();
+    for (r, var_at) in &var_specifiers {
         let m = src.get(r.clone()).unwrap_or("").to_ascii_uppercase();
+        if in_block(*var_at) {
+            let access = match m.as_str() {
+                "PRIVATE" => crate::ast::Access::Private,
+                "PROTECTED" => crate::ast::Access::Protected,
+                _ => crate::ast::Access::Public,
+            };
+            kept_access.push((*var_at, access));
+            blank(&mut text, r.clone());
+            continue;
+        }
         diags.push(
             Diagnostic::warning(
                 code::W0304,
@@ -2181,6 +2214,7 @@ pub fn parse_text(
     references.settle_initial_values(&mut text, &computed);
     let mut local = Diagnostics::new();
     let mut unit = crate::parse_named(file, &text, implicit_name, &mut local);
+    super::classes::set_access(&mut unit, file, src, &pous, &kept_access, &mut local);
     super::var_stat::name_blocks(&mut unit, file, &stat_at);
     restore_field_names(&mut unit, &keyword_fields);
     references.apply(&mut unit, &mut local);
@@ -2678,6 +2712,7 @@ pub fn add_method_vars(
     ] {
         if !vars.is_empty() {
             p.var_blocks.push(VarBlock {
+                access: None,
                 name,
                 kind,
                 constant: false,

@@ -616,10 +616,16 @@ fn body_of<'p>(c: &Class, pending: &'p [PendingBody]) -> Option<&'p PendingBody>
 
 /// The hidden name of the version of method `m` defined at level `level` of a chain.
 fn super_method(level: usize, m: &str) -> String {
-    format!("__S{level:03}_{}", m.to_ascii_uppercase())
+    format!("__S{level:02}_{}", m.to_ascii_uppercase())
 }
 
 /// The hidden name of the body of level `level` of a chain, run by `SUPER^()`.
+/// `__S<level>_`, the start of the hidden name of a method's version at `level` (two digits: a
+/// chain is at most [`MAX_DEPTH`] long), as long as `SUPER.` (`SUPER^.` is one byte longer).
+fn hidden_prefix(level: usize) -> String {
+    format!("__S{level:02}_")
+}
+
 fn super_body(level: usize) -> String {
     format!("__B{level:03}")
 }
@@ -836,6 +842,31 @@ impl Rewrite<'_> {
             if toks[k].tok != Tok::Ident || !word(k).eq_ignore_ascii_case("SUPER") {
                 continue;
             }
+            // `SUPER.M(...)`, `SUPER.x`: edition 3's spelling (6.6.5, SIMATIC AX) of `SUPER^.M`
+            // in a derived block, read so
+            let dotted = level > 0
+                && toks.get(k + 1).is_some_and(|t| t.tok == Tok::Dot)
+                && adjacent(k, k + 1)
+                && toks.get(k + 2).is_some_and(|t| t.tok == Tok::Ident)
+                && adjacent(k + 1, k + 2);
+            if dotted {
+                let name = word(k + 2).to_ascii_uppercase();
+                let start = toks[k].range.start;
+                let visible = self.versions.get(&name).and_then(|v| {
+                    let last = v.last()?.0;
+                    let at = v.iter().rev().find(|(l, _, _)| *l < level)?.0;
+                    Some((at, last))
+                });
+                match visible {
+                    Some((at, last)) if at != last => {
+                        self.needed.push(Hidden::Method(at, name.clone()));
+                        out.replace_range(start..toks[k + 1].range.end, &hidden_prefix(at));
+                    }
+                    // the block's own version, or a variable of a base (the block has it)
+                    _ => out.replace_range(start..toks[k + 1].range.end, "      "),
+                }
+                continue;
+            }
             if toks.get(k + 1).map(|t| &t.tok) != Some(&Tok::Caret) || !adjacent(k, k + 1) {
                 continue;
             }
@@ -865,7 +896,7 @@ impl Rewrite<'_> {
                     let replacement = match visible {
                         Some((at, last)) if at != last => {
                             self.needed.push(Hidden::Method(at, name.clone()));
-                            format!("__S{at:03}_")
+                            format!(" {}", hidden_prefix(at))
                         }
                         // the block's own version, or a variable of a base (the block has it)
                         _ => "       ".to_string(),

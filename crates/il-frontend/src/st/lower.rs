@@ -599,6 +599,7 @@ impl<'d> PouLowering<'d> {
     /// The `VAR_TEMP` block holding the temporaries (none when no temporary was needed).
     pub fn finish(self, span: Span) -> Option<VarBlock> {
         (!self.temps.is_empty()).then_some(VarBlock {
+            access: None,
             name: None,
             kind: VarKind::Temp,
             constant: false,
@@ -614,6 +615,7 @@ impl<'d> PouLowering<'d> {
     /// (a pointer stored from it stays valid, also in a FUNCTION); `None` when there are none.
     pub fn take_literal_copies(&mut self, span: Span) -> Option<VarBlock> {
         (!self.literal_copies.is_empty()).then(|| VarBlock {
+            access: None,
             name: Some(Ident::new(super::var_stat::MARK, span)),
             kind: VarKind::Local,
             constant: false,

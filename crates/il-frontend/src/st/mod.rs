@@ -16,6 +16,7 @@ pub mod additional_blocks;
 pub mod any_inputs;
 pub mod ast;
 pub mod base_view;
+mod classes;
 mod conditional;
 mod conflict_markers;
 pub mod fb_init;

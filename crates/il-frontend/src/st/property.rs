@@ -286,6 +286,7 @@ pub fn accessor_methods(
         blocks.insert(
             0,
             VarBlock {
+                access: None,
                 name: None,
                 kind: VarKind::Input,
                 constant: false,

@@ -328,8 +328,9 @@ pub(super) fn library_qualifiers(
         if !ident(t)
             || dot.tok != Tok::Dot
             || !ident(member)
-            // `THIS.M(...)`: edition 3's call of the block's own method (`parser::statements_in`)
+            // `THIS.M(...)`: edition 3's call of the block's own method (`parser::statements_in`), `SUPER.M(...)` its base's (`inherit`)
             || w == "THIS"
+            || w == "SUPER"
             || declared.contains(&w)
             || PROJECT_PROGRAMS.with(|p| p.borrow().contains(&w))
             || OTHER_FILES_NAMES.with(|o| {

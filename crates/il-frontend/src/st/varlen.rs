@@ -126,6 +126,7 @@ fn split_blocks(blocks: &mut Vec<VarBlock>) -> bool {
                 _ => {
                     out.extend(run.take());
                     run = Some(VarBlock {
+                        access: None,
                         name: None,
                         kind,
                         constant: false,
