@@ -273,12 +273,15 @@ fn unlink_io(text: &mut String) -> Vec<(usize, usize)> {
 /// Blanks the list name of each qualified constant (`GVL_Param.cMax` in `ARRAY[1..GVL_Param.cMax]`,
 /// `STRING(GVL.N)`, `DINT(GVL.A..GVL.B)`) inside brackets and parentheses of the declaration text at
 /// `start..end`, so the constant is looked up by its name among the constants of every file given
-/// (the IEC bound grammar has no qualified names; positions stay the file's own).
+/// (the IEC bound grammar has no qualified names; positions stay the file's own). An initial value
+/// (after `:=`, to the declaration's `;`) is left as written: its qualified names are variables
+/// (`fb : FB := (p := ADR(GVL_IO.HWIO.Lamp))`, a path the checks resolve), not bounds.
 fn unqualify_bounds(text: &mut String, start: usize, end: usize) {
     let b = text.as_bytes();
     let end = end.min(b.len());
     let mut blanks = Vec::new();
     let mut depth = 0usize;
+    let mut in_initial_value = false;
     let mut i = start.min(end);
     while i < end {
         if let Some(after) = skip_comment_or_string(b, i, end) {
@@ -286,6 +289,14 @@ fn unqualify_bounds(text: &mut String, start: usize, end: usize) {
             continue;
         }
         match b[i] {
+            b':' if depth == 0 && b.get(i + 1) == Some(&b'=') => {
+                in_initial_value = true;
+                i += 2;
+            }
+            b';' if depth == 0 => {
+                in_initial_value = false;
+                i += 1;
+            }
             b'{' => i = find_from(b, i + 1, b"}").map_or(end, |e| e + 1),
             b'[' | b'(' => {
                 depth += 1;
@@ -303,7 +314,7 @@ fn unqualify_bounds(text: &mut String, start: usize, end: usize) {
                 let next_is_name = b
                     .get(i + 1)
                     .is_some_and(|c| c.is_ascii_alphabetic() || *c == b'_');
-                if depth > 0 && b.get(i) == Some(&b'.') && next_is_name {
+                if depth > 0 && !in_initial_value && b.get(i) == Some(&b'.') && next_is_name {
                     blanks.push((word, i + 1));
                     i += 1;
                 }

@@ -1909,7 +1909,9 @@ fn vendor_block(name: &str) -> Option<&'static str> {
 /// DAY_DATA := (DAY := 24)`, also an array of it) comes after that structure, which may be declared
 /// below it (IEC 61131-3 and CODESYS do not order type declarations; OSCAT's PLCopen export
 /// initialises `HOLIDAY : ARRAY[..] OF HOLIDAY_DATA` above HOLIDAY_DATA): its field names are known
-/// when the initial value is read. A cycle keeps source order (E0343 reports it).
+/// when the initial value is read; so does every structure such a structure holds by value, at any
+/// depth (`x : ARRAY[..] OF B := [(t := (s := 1))]` needs B's field `t : C` and C's fields, C
+/// declared below B). A cycle keeps source order (E0343 reports it).
 fn struct_declaration_order(units: &[CompilationUnit]) -> Vec<&ast::TypeDecl> {
     let decls: Vec<&ast::TypeDecl> = units
         .iter()
@@ -1925,13 +1927,15 @@ fn struct_declaration_order(units: &[CompilationUnit]) -> Vec<&ast::TypeDecl> {
     for (i, d) in decls.iter().enumerate() {
         index.entry(d.name.key()).or_insert(i);
     }
-    // the structures the initialised fields of `d` hold by value
+    // the structures the fields of `d` hold by value: an initialised field's type is needed with
+    // every structure inside it (a nested initial value names their fields), so each structure
+    // comes after the ones it holds
     let needs = |d: &ast::TypeDecl| -> Vec<usize> {
         let ast::TypeDef::Struct { fields } = &d.def else {
             return Vec::new();
         };
         let mut out = Vec::new();
-        for f in fields.iter().filter(|f| f.init.is_some()) {
+        for f in fields {
             let mut ty = &f.ty;
             while let TypeRef::Array { element, .. } = ty {
                 ty = element;
