@@ -238,6 +238,72 @@ fn flag_name(action: &Ident) -> String {
 }
 
 /// What a POU's calls are resolved against.
+/// Reports (E1021, at the member's name) a call `inst.M()` (or a property's `inst.P`) of a
+/// PRIVATE or PROTECTED member from a POU that may not call it (IEC 61131-3 ed. 3, 6.6.5;
+/// CODESYS "Method": PRIVATE only within its own block, PROTECTED also within the blocks
+/// derived from it, at any depth, through any instance).
+fn check_access(
+    m: &crate::ast::MemberAccess,
+    name: &str,
+    instance: &VarRef,
+    scope: &Scope<'_>,
+    diags: &mut Diagnostics,
+) {
+    if scope.caller == m.owner {
+        return;
+    }
+    if m.access == crate::ast::Access::Protected {
+        // the caller's chain of bases, read from its class variable (`base_view::class_var`)
+        let derived = scope.pou_vars.get(&scope.caller).is_some_and(|vars| {
+            vars.keys()
+                .filter_map(|v| crate::st::base_view::class_chain(v))
+                .any(|chain| chain.contains(&m.owner))
+        });
+        if derived {
+            return;
+        }
+    }
+    let span = match instance.accessors.last() {
+        Some(Accessor::Field(f)) => f.span,
+        _ => instance.span,
+    };
+    let what = if crate::st::property::is_accessor(name) {
+        let get = name
+            .to_ascii_uppercase()
+            .starts_with(crate::st::property::GET_PREFIX);
+        let which = if get { "Get" } else { "Set" };
+        format!("the {which} accessor of PROPERTY `{}`", m.member)
+    } else {
+        format!("METHOD `{}`", m.member)
+    };
+    let who = match m.access {
+        crate::ast::Access::Protected => {
+            format!(
+                "callable only in `{}` and the blocks extending it",
+                m.owner_name
+            )
+        }
+        _ => format!("callable only in `{}` itself", m.owner_name),
+    };
+    diags.push(
+        Diagnostic::error(
+            code::E1021,
+            format!(
+                "{what} is {} to `{}`: {who}",
+                m.access.keyword(),
+                m.owner_name
+            ),
+        )
+        .at(span)
+        .with_primary_label(format!("{} {}", m.access.keyword(), m.what))
+        .with_label(m.at, format!("declared {} here", m.access.keyword()))
+        .with_hint(format!(
+            "call a PUBLIC method of `{}` that uses it, or declare it PUBLIC",
+            m.owner_name
+        )),
+    );
+}
+
 struct Scope<'a> {
     locals: &'a HashMap<String, TypeRef>,
     globals: &'a HashMap<String, TypeRef>,
@@ -426,6 +492,9 @@ fn rewrite_calls(
         let Some((fb, action)) = scope.action_of(instance) else {
             continue;
         };
+        if let Some(m) = &action.access {
+            check_access(m, &action.name.name, instance, scope, diags);
+        }
         method_arguments(action, args, instance);
         if matches!(args, CallArgs::NonFormal(_)) {
             continue;

@@ -139,6 +139,29 @@ pub struct Action {
     /// from outside its POU is checked where its POU calls it, as before).
     #[serde(skip)]
     pub diagnostics: Vec<diagnostics::Diagnostic>,
+    /// For a METHOD or a property's accessor declared `PRIVATE` or `PROTECTED` (IEC 61131-3 ed.
+    /// 3, 6.6.5; CODESYS "Method"): who may call it, checked by [`crate::actions::link`] at each
+    /// call through an instance. `None`: PUBLIC (or INTERNAL), callable from anywhere.
+    #[serde(skip)]
+    pub access: Option<MemberAccess>,
+}
+
+/// The restricting access specifier of a method or property accessor, and where it is declared.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct MemberAccess {
+    /// `PRIVATE` or `PROTECTED`.
+    pub access: Access,
+    /// The function block or class that declares the member (upper-case name; a derived block's
+    /// copy of an inherited member keeps its base's).
+    pub owner: String,
+    /// The owner's name as written.
+    pub owner_name: String,
+    /// The member's name as written (a property's, for its accessors).
+    pub member: String,
+    /// The member's name in its declaration.
+    pub at: Span,
+    /// `METHOD` or `PROPERTY`.
+    pub what: &'static str,
 }
 
 // ---------------------------------------------------------------- types

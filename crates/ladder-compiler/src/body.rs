@@ -355,6 +355,7 @@ fn lower_actions<'e, 'a>(
             method_inputs: None,
             method_defaults: Vec::new(),
             diagnostics: Vec::new(),
+            access: None,
         });
         out.il.insert(n.key(), body);
         out.names.push(n);

@@ -1009,6 +1009,7 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
                 inst: Vec::new(),
                 once: Vec::new(),
                 local_inits: Vec::new(),
+                access: None,
             });
         }
     }

@@ -1151,7 +1151,20 @@ impl Body<'_, '_> {
                                 .map(|(_, a)| *a),
                             FbType::Standard(_) => None,
                         };
-                        let inside = matches!(fb, FbType::User(id) if id.0 == self.pou.0);
+                        // (PROTECTED: also in a block derived from it, at any depth, through
+                        // any instance: the caller's class variable names its chain of bases)
+                        let inside = match fb {
+                            FbType::User(id) if id.0 == self.pou.0 => true,
+                            FbType::User(id) if access == Some(Access::Protected) => {
+                                let base =
+                                    self.a.model.pous[id.0 as usize].name.to_ascii_uppercase();
+                                self.a.model.pous[self.pou.0 as usize].vars.iter().any(|v| {
+                                    crate::st::base_view::class_chain(&v.name)
+                                        .is_some_and(|chain| chain.contains(&base))
+                                })
+                            }
+                            _ => false,
+                        };
                         if let (Some(a @ (Access::Private | Access::Protected)), false) =
                             (access, inside)
                         {
@@ -1178,7 +1191,9 @@ impl Body<'_, '_> {
                         let read_only = match dir {
                             ParamDir::Output => Some(ReadOnly::FbOutput { at }),
                             ParamDir::Input | ParamDir::InOut => place.read_only,
-                            ParamDir::Internal if access == Some(Access::Public) => place.read_only,
+                            ParamDir::Internal if access == Some(Access::Public) || inside => {
+                                place.read_only
+                            }
                             ParamDir::Internal => {
                                 // CODESYS and TwinCAT give access to internal variables (W1412,
                                 // once per POU, block type and variable)

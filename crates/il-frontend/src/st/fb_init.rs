@@ -500,6 +500,7 @@ fn lower(decls: &super::Declarations, p: &Pou, stmts: &[Stmt], diags: &mut Diagn
         method_inputs: Some(Vec::new()),
         method_defaults: Vec::new(),
         diagnostics: Vec::new(),
+        access: None,
     }
 }
 

@@ -104,6 +104,8 @@ pub struct MethodText {
     pub stmts: Range<usize>,
     /// Byte range of the whole block, `METHOD` to `END_METHOD`.
     pub whole: Range<usize>,
+    /// Its access specifier between `METHOD` and the name (none: PUBLIC).
+    pub access: Option<crate::ast::Access>,
 }
 
 /// A method of a function block read from an ST file, waiting to be lowered with its block
@@ -133,6 +135,8 @@ pub struct PendingMethod {
     /// CODESYS creates such an instance again at each call of the method, FB_init included, so
     /// the method starts with `p.FB_init(TRUE, FALSE, dist)` ([`lower_method`]).
     pub local_inits: Vec<super::fb_init_args::DeclArgs>,
+    /// Declared `PRIVATE` or `PROTECTED` (see [`crate::ast::Action::access`]).
+    pub access: Option<crate::ast::MemberAccess>,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -621,8 +625,19 @@ fn pending_members(
     methods: &mut Vec<PendingMethod>,
     (method_diags, diags): (&mut Diagnostics, &mut Diagnostics),
 ) {
+    let owned = |access: Option<crate::ast::Access>, member: &str, at: Range<usize>, what| {
+        access.map(|access| crate::ast::MemberAccess {
+            access,
+            owner: p.name.to_ascii_uppercase(),
+            owner_name: p.name.clone(),
+            member: member.to_string(),
+            at: Span::new(file, at.start, at.end),
+            what,
+        })
+    };
     for m in &p.methods {
         let mut pm = pending_method(file, src, m, method_diags);
+        pm.access = owned(m.access, &m.name, m.name_range.clone(), "METHOD");
         super::var_stat::name_method_blocks(&mut pm, stat_at);
         references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
         methods.push(pm);
@@ -630,6 +645,18 @@ fn pending_members(
     }
     for pr in &p.properties {
         for mut pm in super::property::pending_accessors(file, src, pr, diags) {
+            // the accessor's own specifier (`GET PROTECTED`), else the property's
+            let own = if pm.name.name.starts_with(super::property::GET_PREFIX) {
+                pr.get_access
+            } else {
+                pr.set_access
+            };
+            pm.access = owned(
+                own.or(pr.access),
+                &pr.name,
+                pr.name_range.clone(),
+                "PROPERTY",
+            );
             references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
             methods.push(pm);
         }
@@ -685,6 +712,7 @@ pub(super) fn pending_method(
         inst,
         once,
         local_inits: Vec::new(),
+        access: None,
     }
 }
 
@@ -1079,6 +1107,21 @@ pub(super) fn member_name_at(src: &str, toks: &[Token], k: usize) -> usize {
     h
 }
 
+/// The access specifier among a member's modifier tokens (`METHOD PRIVATE M`, `PROPERTY
+/// PROTECTED P`, `GET PROTECTED`): PRIVATE or PROTECTED; PUBLIC, INTERNAL (the project is one
+/// namespace) or none: `None`, callable from anywhere (CODESYS's default for methods).
+pub(super) fn member_access(src: &str, toks: &[Token]) -> Option<crate::ast::Access> {
+    toks.iter().find_map(|t| {
+        if is_word(src, t, "PRIVATE") {
+            Some(crate::ast::Access::Private)
+        } else if is_word(src, t, "PROTECTED") {
+            Some(crate::ast::Access::Protected)
+        } else {
+            None
+        }
+    })
+}
+
 /// The `METHOD ... END_METHOD` blocks among a function block's body tokens. A block that does not
 /// end with `END_METHOD` is left out (the body's parse reports it).
 pub(super) fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
@@ -1096,6 +1139,7 @@ pub(super) fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
             k += 1;
             continue;
         };
+        let access = member_access(src, &toks[k + 1..h]);
         h += 1;
         let mut ret_end = None;
         if toks.get(h).is_some_and(|t| t.tok == Tok::Colon) {
@@ -1133,6 +1177,7 @@ pub(super) fn scan_methods(src: &str, toks: &[Token]) -> Vec<MethodText> {
             decls: decl_start..decl_end,
             stmts: decl_end..toks[e].range.start,
             whole: toks[k].range.start..toks[e].range.end,
+            access,
         });
         k = e + 1;
     }
@@ -2563,6 +2608,7 @@ pub fn compile_pending(
                         method_inputs: Some(Vec::new()),
                         method_defaults: Vec::new(),
                         diagnostics: Vec::new(),
+                        access: None,
                     });
                 }
                 if !init.is_empty() {
@@ -3115,6 +3161,11 @@ fn lower_method_as(
                 .collect()
         },
         diagnostics: Vec::new(),
+        access: if action.is_some() {
+            None
+        } else {
+            m.access.clone()
+        },
     })
 }
 

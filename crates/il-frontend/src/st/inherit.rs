@@ -505,6 +505,87 @@ fn unknown_interface_bases(interfaces: &HashMap<String, &InterfaceOop>, diags: &
     }
 }
 
+/// Reports (E1021) each call by its own name (`M()`, `THIS^.M()`, `SUPER^.M()`, also without
+/// `^`) in a text of level `level` of a chain of a method a base declares `PRIVATE` (IEC 61131-3
+/// ed. 3, 6.6.5; CODESYS "Method": callable only within its own block, not in the blocks
+/// derived from it). Inherited code is checked at its own level; each place is reported once.
+fn private_calls(
+    file: FileId,
+    text: &str,
+    base: usize,
+    level: usize,
+    ctx: &Rewrite<'_>,
+    diags: &mut Diagnostics,
+) {
+    let (toks, _) = lex(text);
+    let me = ctx.levels[level].name.key();
+    for (k, t) in toks.iter().enumerate() {
+        if t.tok != Tok::Ident || toks.get(k + 1).is_none_or(|n| n.tok != Tok::LParen) {
+            continue;
+        }
+        // after a `.`: only `THIS.`, `THIS^.`, `SUPER.`, `SUPER^.` (another instance's calls
+        // are checked where they are linked, `crate::actions`)
+        let mut below = level + 1;
+        if k > 0 && toks[k - 1].tok == Tok::Dot {
+            let mut q = k - 1;
+            if q > 0 && toks[q - 1].tok == Tok::Caret {
+                q -= 1;
+            }
+            let Some(w) = q
+                .checked_sub(1)
+                .and_then(|q| text.get(toks[q].range.clone()))
+            else {
+                continue;
+            };
+            if w.eq_ignore_ascii_case("SUPER") {
+                below = level;
+            } else if !w.eq_ignore_ascii_case("THIS") {
+                continue;
+            }
+        }
+        let Some(name) = text.get(t.range.clone()) else {
+            continue;
+        };
+        let Some(&(_, m, _)) = ctx
+            .versions
+            .get(&name.to_ascii_uppercase())
+            .and_then(|v| v.iter().rev().find(|(l, _, _)| *l < below))
+        else {
+            continue;
+        };
+        let Some(a) = m
+            .access
+            .as_ref()
+            .filter(|a| a.access == crate::ast::Access::Private && a.owner != me)
+        else {
+            continue;
+        };
+        let span = Span::new(file, base + t.range.start, base + t.range.end);
+        if diags
+            .iter()
+            .any(|d| d.code == code::E1021 && d.span == Some(span))
+        {
+            continue;
+        }
+        diags.push(
+            Diagnostic::error(
+                code::E1021,
+                format!(
+                    "METHOD `{}` is PRIVATE to `{}`: callable only in `{}` itself",
+                    a.member, a.owner_name, a.owner_name
+                ),
+            )
+            .at(span)
+            .with_primary_label(format!("PRIVATE {}", a.what))
+            .with_label(a.at, "declared PRIVATE here")
+            .with_hint(format!(
+                "a derived block does not call its base's PRIVATE methods: call a PUBLIC or PROTECTED method of `{}` that uses it, or declare it PROTECTED",
+                a.owner_name
+            )),
+        );
+    }
+}
+
 /// What [`flatten`] returns: the pending bodies to lower and the interfaces variables may have.
 pub struct Flat {
     /// The pending bodies, derived blocks flattened.
@@ -728,11 +809,13 @@ fn flatten_one(
             continue;
         };
         let mut m = m.clone();
+        private_calls(file, &m.text, m.base, j, &ctx, diags);
         m.text = ctx.rewrite(file, &m.text, m.base, j, diags);
         methods.push(m);
         files.push(file);
     }
     let own_text = pb.text.clone();
+    private_calls(pb.file, &own_text, pb.base, n, &ctx, diags);
     pb.text = ctx.rewrite(pb.file, &own_text, pb.base, n, diags);
     // FB_init: every base's version runs before the block's own, on the same instance (Beckhoff
     // "Behavior with derived function blocks", CODESYS "Method: FB_Init": the base's FB_init is
@@ -779,6 +862,7 @@ fn flatten_one(
                     inst: Vec::new(),
                     once: Vec::new(),
                     local_inits: Vec::new(),
+                    access: None,
                 });
                 files.push(file);
             }

@@ -187,6 +187,7 @@ pub fn compile_body_with_actions(
                 method_inputs: None,
                 method_defaults: Vec::new(),
                 diagnostics: local.into_vec(),
+                access: None,
             }
         })
         .collect();

@@ -87,6 +87,12 @@ pub struct PropertyText {
     pub set: Option<(Range<usize>, Range<usize>)>,
     /// Byte range of the whole block, `PROPERTY` to `END_PROPERTY`.
     pub whole: Range<usize>,
+    /// The property's access specifier (`PROPERTY PRIVATE P`; none: PUBLIC).
+    pub access: Option<crate::ast::Access>,
+    /// The Get accessor's own (`GET PROTECTED`), overriding the property's.
+    pub get_access: Option<crate::ast::Access>,
+    /// The Set accessor's own.
+    pub set_access: Option<crate::ast::Access>,
 }
 
 /// The `PROPERTY` blocks among a function block's body tokens. A block without `: type` on its
@@ -109,6 +115,7 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
             k += 1;
             continue;
         }
+        let access = super::file::member_access(src, &toks[k + 1..h]);
         h += 2;
         // the type ends with its line (`PROPERTY P : INT` then the accessors)
         let line_end = src
@@ -137,22 +144,24 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
         }
         let mut get = None;
         let mut set = None;
+        let (mut get_access, mut set_access) = (None, None);
         let mut end = None;
         while h < n && !matches!(toks[h].tok, Tok::Eof) {
             if is_word(src, &toks[h], "END_PROPERTY") {
                 end = Some(h);
                 break;
             }
-            let (slot, close) = if is_word(src, &toks[h], "GET") {
-                (&mut get, "END_GET")
+            let (slot, close, slot_access) = if is_word(src, &toks[h], "GET") {
+                (&mut get, "END_GET", &mut get_access)
             } else if is_word(src, &toks[h], "SET") {
-                (&mut set, "END_SET")
+                (&mut set, "END_SET", &mut set_access)
             } else {
                 h += 1;
                 continue;
             };
             h += 1;
-            // an accessor's own access modifier (TwinCAT: `SET` declared `PROTECTED`): read past
+            // an accessor's own access modifier (TwinCAT: `SET` declared `PROTECTED`): kept
+            let from = h;
             while h + 1 < n
                 && ["PUBLIC", "PRIVATE", "PROTECTED", "INTERNAL"]
                     .iter()
@@ -160,6 +169,7 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
             {
                 h += 1;
             }
+            *slot_access = super::file::member_access(src, &toks[from..h]);
             let decl_start = toks.get(h).map_or(0, |t| t.range.start);
             let (after, vars_end) = super::file::skip_var_blocks(src, toks, h);
             h = after;
@@ -197,6 +207,9 @@ pub(super) fn scan_properties(src: &str, toks: &[Token]) -> Vec<PropertyText> {
             get,
             set,
             whole: toks[k].range.start..toks[e].range.end,
+            access,
+            get_access,
+            set_access,
         });
         k = e + 1;
     }
@@ -280,6 +293,7 @@ pub fn accessor_methods(
             inst: Vec::new(),
             once: Vec::new(),
             local_inits: Vec::new(),
+            access: None,
         });
     }
     if let Some((mut blocks, text, base)) = set {
@@ -304,6 +318,7 @@ pub fn accessor_methods(
             inst: Vec::new(),
             once: Vec::new(),
             local_inits: Vec::new(),
+            access: None,
         });
     }
     out
