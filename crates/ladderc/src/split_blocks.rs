@@ -262,7 +262,7 @@ fn first_instance(
     key: &str,
     is_fun: impl Fn(diagnostics::FileId) -> bool,
 ) -> Option<diagnostics::Span> {
-    fn named<'a>(t: &'a TypeRef) -> Option<&'a il_frontend::ast::Ident> {
+    fn named(t: &TypeRef) -> Option<&il_frontend::ast::Ident> {
         match t {
             TypeRef::Named(i) => Some(i),
             TypeRef::Array { element, .. } => named(element),
