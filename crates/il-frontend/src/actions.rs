@@ -529,13 +529,21 @@ fn method_arguments(action: &Action, args: &mut CallArgs, called: &VarRef) {
     };
     let m = &action.name.name;
     match args {
-        CallArgs::NonFormal(ops) if ops.len() <= inputs.len() => {
+        // the inputs and in-outs in order, then the outputs (IEC 61131-3 ed. 3, 6.6.1.4.2: a
+        // non-formal call gives the parameters in the order of the definition; SIMATIC AX writes
+        // `c.Get(x)` for a method whose only parameter is an output; before round 26: E1011)
+        CallArgs::NonFormal(ops) if ops.len() <= inputs.len() + action.method_outputs.len() => {
+            let outputs = action.method_outputs.iter().map(|o| (o, true));
             let list = std::mem::take(ops)
                 .into_iter()
-                .zip(inputs)
-                .map(|(value, input)| FormalArg {
-                    name: Ident::new(method_var(m, &input.name), value.span()),
-                    dir: ArgDir::Input,
+                .zip(inputs.iter().map(|i| (i, false)).chain(outputs))
+                .map(|(value, (param, output))| FormalArg {
+                    name: Ident::new(method_var(m, &param.name), value.span()),
+                    dir: if output {
+                        ArgDir::Output { negated: false }
+                    } else {
+                        ArgDir::Input
+                    },
                     span: value.span(),
                     value,
                 })

@@ -129,6 +129,11 @@ pub struct Action {
     /// to the block's hidden variables `__M_<METHOD>_<name>` (positional ones in this order), see
     /// [`crate::actions`]. `None` for an action.
     pub method_inputs: Option<Vec<Ident>>,
+    /// For a METHOD: its VAR_OUTPUT names in order, bound by the positional arguments after the
+    /// inputs (IEC 61131-3 ed. 3, 6.6.1.4.2: a non-formal call gives every parameter of the
+    /// definition in order); empty for an action.
+    #[serde(skip)]
+    pub method_outputs: Vec<Ident>,
     /// For a METHOD: its VAR_INPUTs that start again at each call (IEC 61131-3 ed. 3, 6.6.1.2;
     /// CODESYS, TwinCAT), each with whether it is a reference or pointer. A call that does not give
     /// one passes its initial value (the never-written `__MD_<METHOD>_<name>`), or NULL for a

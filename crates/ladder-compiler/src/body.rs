@@ -353,6 +353,7 @@ fn lower_actions<'e, 'a>(
             ),
             temps: None,
             method_inputs: None,
+            method_outputs: Vec::new(),
             method_defaults: Vec::new(),
             diagnostics: Vec::new(),
             access: None,

@@ -763,10 +763,49 @@ impl Session {
             .filter(|(_, f)| f.name.to_ascii_lowercase().ends_with(".fun"))
             .map(|(id, _)| id)
             .collect();
+        // the interfaces of ladderc's PLCopen blocks, to tell a vendor's stub of the same name
+        let templates = if fun_files.is_empty() {
+            Library::new()
+        } else {
+            Library::builtin(&mut diagnostics::SourceMap::new(), &mut Diagnostics::new())
+        };
+        let provided = |name: &str| {
+            use param_passing::template::Direction;
+            templates.get(name).map(|t| {
+                t.params
+                    .iter()
+                    .filter_map(|p| {
+                        let kind = match p.direction {
+                            Direction::Input => il_frontend::ast::VarKind::Input,
+                            Direction::Output => il_frontend::ast::VarKind::Output,
+                            Direction::InOut => il_frontend::ast::VarKind::InOut,
+                            Direction::State => return None,
+                        };
+                        Some(crate::split_blocks::ProvidedParam {
+                            name: p.name.clone(),
+                            kind,
+                            ty: if p.array.is_some() {
+                                "ARRAY".to_string()
+                            } else {
+                                p.iec_type.clone()
+                            },
+                            required: p.required,
+                        })
+                    })
+                    .collect()
+            })
+        };
+        let map = &self.map;
+        let file_name = |f: diagnostics::FileId| {
+            let n = &map.get(f).name;
+            n.rsplit(['/', '\\']).next().unwrap_or(n).to_string()
+        };
         crate::split_blocks::join(
             &mut units,
             &mut pending,
             |f| fun_files.contains(&f),
+            provided,
+            file_name,
             &mut self.diags,
         );
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);

@@ -16,16 +16,33 @@
 //! before the bodies are compiled, so the statements are lowered knowing the declarations.
 
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
-use il_frontend::ast::{CompilationUnit, LibraryElement, PouKind};
+use il_frontend::ast::{CompilationUnit, LibraryElement, PouKind, TypeRef, VarKind};
 use il_frontend::st::file::PendingBody;
 use std::collections::HashMap;
 
+/// A parameter of a block ladderc provides (its PLCopen templates): name, direction (VAR_INPUT,
+/// VAR_OUTPUT or VAR_IN_OUT), type, whether a call must give it.
+pub struct ProvidedParam {
+    /// The parameter's name.
+    pub name: String,
+    /// VAR_INPUT, VAR_OUTPUT or VAR_IN_OUT.
+    pub kind: VarKind,
+    /// Its IEC type (`AXIS_REF`, `LREAL`; `ARRAY` for an array).
+    pub ty: String,
+    /// Whether a call must give it.
+    pub required: bool,
+}
+
 /// Joins the declaration-only and implementation-only halves of each block (see the module
-/// header).
+/// header). `provided` gives the interface of a block ladderc provides by that name (its PLCopen
+/// templates), to tell a vendor's block of the same name (B&R's Acp10_MC `MC_Power`, `Axis :
+/// UDINT`) from the standard one.
 pub fn join(
     units: &mut [CompilationUnit],
     pending: &mut Vec<PendingBody>,
     is_fun: impl Fn(diagnostics::FileId) -> bool,
+    provided: impl Fn(&str) -> Option<Vec<ProvidedParam>>,
+    file_name: impl Fn(diagnostics::FileId) -> String,
     diags: &mut Diagnostics,
 ) {
     // (unit, item) of every function block and function, by upper-case name
@@ -121,6 +138,31 @@ pub fn join(
             {
                 continue;
             }
+            // a vendor's block named like one ladderc provides, with another interface (B&R's
+            // Acp10_MC `MC_Power` takes `Axis : UDINT`, an address, PLCopen's `Axis : AXIS_REF`
+            // in-out): not ladderc's block; its uses are one error at the first instance (before
+            // round 26: E1006, E1033 ... at each call, ladderc's block meeting the vendor's calls)
+            if let Some((theirs, ours)) = provided(&p.name.name).and_then(|q| difference(p, &q)) {
+                if let Some(at) = first_instance(units, &p.name.key(), &is_fun) {
+                    diags.push(
+                        Diagnostic::new(
+                            code::E1003,
+                            Severity::Error,
+                            format!(
+                                "`{}` of {} ({theirs}) is B&R's, not PLCopen's ({ours}): not provided",
+                                p.name.name,
+                                file_name(p.name.span.file)
+                            ),
+                        )
+                        .at(at)
+                        .with_primary_label("an instance of the vendor's block")
+                        .with_label(p.name.span, "declared here, without statements")
+                        .with_hint("ladderc provides PLCopen's block of that name, whose parameters differ; give the vendor library's source, or write the program with PLCopen's interface"),
+                    );
+                    // (kept: the calls are checked against the vendor's interface, no cascade)
+                    continue;
+                }
+            }
             match skipped.iter_mut().find(|(f, _, _)| *f == p.name.span.file) {
                 Some((_, _, names)) => names.push(p.name.name.clone()),
                 None => skipped.push((p.name.span.file, p.name.span, vec![p.name.name.clone()])),
@@ -159,6 +201,82 @@ pub fn join(
     for (u, i) in removals.into_iter().rev() {
         units[u].items.remove(i);
     }
+}
+
+/// The first difference between the stub `p`'s parameters and those of ladderc's block: (the
+/// stub's text, ladderc's text); `None` when every parameter of the stub is ladderc's (name,
+/// direction, type) and the stub leaves out none that a call must give.
+fn difference(p: &il_frontend::ast::Pou, ours: &[ProvidedParam]) -> Option<(String, String)> {
+    let kw = |k: VarKind| match k {
+        VarKind::Input => "VAR_INPUT ",
+        VarKind::Output => "VAR_OUTPUT ",
+        _ => "VAR_IN_OUT ",
+    };
+    let mut theirs = Vec::new();
+    for b in &p.var_blocks {
+        if !matches!(b.kind, VarKind::Input | VarKind::Output | VarKind::InOut) {
+            continue;
+        }
+        for v in &b.vars {
+            let ty = match &v.ty {
+                TypeRef::Named(t) => t.name.to_ascii_uppercase(),
+                TypeRef::String { wide: false, .. } => "STRING".to_string(),
+                TypeRef::String { wide: true, .. } => "WSTRING".to_string(),
+                TypeRef::Array { .. } => "ARRAY".to_string(),
+                _ => "?".to_string(),
+            };
+            let Some(q) = ours.iter().find(|q| v.name.is(&q.name)) else {
+                return Some((
+                    format!("{} : {ty}", v.name.name),
+                    format!("no `{}`", v.name.name),
+                ));
+            };
+            if q.kind != b.kind || !q.ty.eq_ignore_ascii_case(&ty) {
+                let (a, o) = if q.kind != b.kind {
+                    (kw(b.kind), kw(q.kind))
+                } else {
+                    ("", "")
+                };
+                return Some((
+                    format!("{a}{} : {ty}", v.name.name),
+                    format!("{o}{} : {}", q.name, q.ty),
+                ));
+            }
+            theirs.push(v.name.key());
+        }
+    }
+    ours.iter()
+        .find(|q| q.required && !theirs.contains(&q.name.to_ascii_uppercase()))
+        .map(|q| {
+            (
+                format!("no `{}`", q.name),
+                format!("{}{} : {}", kw(q.kind), q.name, q.ty),
+            )
+        })
+}
+
+/// The type name of the first instance of the block `key` (upper case) declared outside `.fun`
+/// files: a variable of that type or of an array of it.
+fn first_instance(
+    units: &[CompilationUnit],
+    key: &str,
+    is_fun: impl Fn(diagnostics::FileId) -> bool,
+) -> Option<diagnostics::Span> {
+    fn named(t: &TypeRef) -> Option<&il_frontend::ast::Ident> {
+        match t {
+            TypeRef::Named(i) => Some(i),
+            TypeRef::Array { element, .. } => named(element),
+            _ => None,
+        }
+    }
+    units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .flat_map(|item| item.var_blocks())
+        .flat_map(|b| b.vars.iter())
+        .filter_map(|v| named(&v.ty))
+        .find(|t| t.key() == key && !is_fun(t.span.file))
+        .map(|t| t.span)
 }
 
 fn pou(units: &[CompilationUnit], (u, i): (usize, usize)) -> Option<&il_frontend::ast::Pou> {

@@ -1288,7 +1288,26 @@ impl Body<'_, '_> {
                     .filter(|p| matches!(p.1, ParamDir::Input | ParamDir::InOut))
                     .cloned()
                     .collect();
-                if ops.len() > inputs.len() {
+                // an output in a positional call of a block (`c(x)` where C has only the output
+                // `o`): named in the message (before round 26: "C has 0 inputs, 1 given" alone)
+                let first_output = params.iter().find(|p| p.1 == ParamDir::Output);
+                if let (true, Some(out)) = (ops.len() > inputs.len(), first_output) {
+                    self.a
+                        .error(
+                            code::E1020,
+                            ops[inputs.len()].span(),
+                            format!(
+                                "{tname} has {} inputs, {} given: an output of a block is not passed positionally",
+                                inputs.len(),
+                                ops.len()
+                            ),
+                        )
+                        .label("one argument too many")
+                        .hint(format!(
+                            "connect the output by name (`{0} => x`), or read it after the call (`inst.{0}`)",
+                            out.0
+                        ));
+                } else if ops.len() > inputs.len() {
                     self.a
                         .error(
                             code::E1020,

@@ -498,6 +498,7 @@ fn lower(decls: &super::Declarations, p: &Pou, stmts: &[Stmt], diags: &mut Diagn
         body: crate::actions::instantiate(&body, "__FBI_L", p.name.span),
         temps,
         method_inputs: Some(Vec::new()),
+        method_outputs: Vec::new(),
         method_defaults: Vec::new(),
         diagnostics: Vec::new(),
         access: None,

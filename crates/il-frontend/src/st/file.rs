@@ -2606,6 +2606,7 @@ pub fn compile_pending(
                         body: crate::actions::instantiate(&init, "__VINIT_", span),
                         temps: None,
                         method_inputs: Some(Vec::new()),
+                        method_outputs: Vec::new(),
                         method_defaults: Vec::new(),
                         diagnostics: Vec::new(),
                         access: None,
@@ -3141,12 +3142,24 @@ fn lower_method_as(
         .filter(|b| matches!(b.kind, VarKind::Input | VarKind::InOut))
         .flat_map(|b| b.vars.iter().map(|v| v.name.clone()))
         .collect();
+    // (the positional arguments after them bind the outputs, IEC 61131-3 ed. 3, 6.6.1.4.2)
+    let outputs = m
+        .blocks
+        .iter()
+        .filter(|b| matches!(b.kind, VarKind::Output))
+        .flat_map(|b| b.vars.iter().map(|v| v.name.clone()))
+        .collect();
     Some(crate::ast::Action {
         pou: p.name.clone(),
         name: action.unwrap_or(&m.name).clone(),
         body,
         temps: None,
         method_inputs: Some(if action.is_some() { Vec::new() } else { inputs }),
+        method_outputs: if action.is_some() {
+            Vec::new()
+        } else {
+            outputs
+        },
         method_defaults: if action.is_some() || super::fb_init::is_special_method(&m.name.name) {
             Vec::new()
         } else {

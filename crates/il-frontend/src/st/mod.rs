@@ -185,6 +185,7 @@ pub fn compile_body_with_actions(
                 body,
                 temps: None,
                 method_inputs: None,
+                method_outputs: Vec::new(),
                 method_defaults: Vec::new(),
                 diagnostics: local.into_vec(),
                 access: None,
