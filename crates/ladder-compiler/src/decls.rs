@@ -278,6 +278,21 @@ fn is_reference(name: &str) -> Option<il_frontend::ast::RefKind> {
     }
 }
 
+/// The variable of an initial value `ADR(x)` / `REF(x)` (a name, an element or a field; any
+/// case, blanks allowed inside the parentheses); `None` for other text.
+fn address_of(text: &str, span: diagnostics::Span) -> Option<il_frontend::ast::VarRef> {
+    let t = text.trim();
+    let (callee, rest) = t.split_at_checked(3)?;
+    if !(callee.eq_ignore_ascii_case("ADR") || callee.eq_ignore_ascii_case("REF")) {
+        return None;
+    }
+    let inner = rest.trim_start().strip_prefix('(')?.strip_suffix(')')?;
+    if inner.contains(['(', ')', '\'', '"']) {
+        return None;
+    }
+    values::var_ref(inner, span)
+}
+
 /// `<initialValue>`: simpleValue, arrayValue, structValue.
 /// `ty` is the declared type: a string variable's initial value written without its type's quotes (as v1.0
 /// exports and Beremiz do: `"1234"` for a STRING) is taken as the string itself.
@@ -307,6 +322,17 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
                         },
                     )));
                 }
+            }
+            // `ADR(x)` / `REF(x)` of a variable (CODESYS exports a declaration's `:= ADR(x)` so):
+            // the address, as the ST declaration `p : POINTER TO INT := ADR(x);` reads it
+            if let Some(of) = address_of(text, span) {
+                return Some(Initializer::Value(il_frontend::ast::Operand::Ref(
+                    Box::new(il_frontend::ast::RefOperand {
+                        of: Some(of),
+                        span,
+                        call_scoped: false,
+                    }),
+                )));
             }
             match values::operand(text, span) {
                 Some(op) => {
