@@ -8,7 +8,8 @@
 //! - a PLCopen XML initial value `<simpleValue value="ADR(x)"/>` (CODESYS's export of `p :
 //!   POINTER TO INT := ADR(x);`) makes the pointer start at `x`, for a local, a structure's field
 //!   and a global pointer, as the ST declaration does (before: E3011 "is not a literal, a
-//!   constant name or an integer constant expression");
+//!   constant name or an integer constant expression"); `ADR('State')` of a literal is one E0305,
+//!   as in ST (before: that E3011);
 //! - the actions of a POU whose body is instruction list (an `ACTIONS ... END_ACTIONS` block, or
 //!   CODESYS V2.3's bare `ACTION Name: ... END_ACTION` after the POU), each written in IL or ST,
 //!   run where the IL body calls them (`CAL Act`, `CALC Act`) and through an instance from other
@@ -380,4 +381,37 @@ END_ACTION
         "{diags:?}"
     );
     assert!(errors.len() <= 2, "{diags:?}");
+}
+
+/// `ADR('State')` (the address of a string literal, in CODESYS's MQTT export) is not a
+/// variable's address: one E0305 saying so, as the ST declaration gets (before: E3011 "is not a
+/// literal, a constant name or an integer constant expression").
+#[test]
+fn a_plcopen_initial_value_adr_of_a_literal_is_one_e0305() {
+    let src = plcopen(
+        r#"    <pous>
+      <pou name="PLC_PRG" pouType="program">
+        <interface>
+          <localVars>
+            <variable name="pS">
+              <type><pointer><baseType><string /></baseType></pointer></type>
+              <initialValue><simpleValue value="ADR('State')" /></initialValue>
+            </variable>
+          </localVars>
+        </interface>
+        <body>
+          <ST><xhtml xmlns="http://www.w3.org/1999/xhtml">;</xhtml></ST>
+        </body>
+      </pou>
+    </pous>"#,
+        "",
+    );
+    let (code, diags) = check_text("lit.xml", &src);
+    assert_eq!(code, Some(1), "{diags:?}");
+    let errors: Vec<_> = diags.iter().filter(|d| d.contains("error")).collect();
+    assert_eq!(errors.len(), 1, "{diags:?}");
+    assert!(
+        errors[0].contains("E0305") && errors[0].contains("ADR('State')"),
+        "{diags:?}"
+    );
 }

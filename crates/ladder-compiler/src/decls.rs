@@ -293,6 +293,15 @@ fn address_of(text: &str, span: diagnostics::Span) -> Option<il_frontend::ast::V
     values::var_ref(inner, span)
 }
 
+/// Whether an initial value's text is a call of `ADR` or `REF` (of anything).
+fn is_address_call(text: &str) -> bool {
+    let t = text.trim();
+    t.split_at_checked(3).is_some_and(|(callee, rest)| {
+        (callee.eq_ignore_ascii_case("ADR") || callee.eq_ignore_ascii_case("REF"))
+            && rest.trim_start().starts_with('(')
+    })
+}
+
 /// `<initialValue>`: simpleValue, arrayValue, structValue.
 /// `ty` is the declared type: a string variable's initial value written without its type's quotes (as v1.0
 /// exports and Beremiz do: `"1234"` for a STRING) is taken as the string itself.
@@ -362,6 +371,18 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
                             span,
                         },
                     ))),
+                    Err(_) if is_address_call(text) => {
+                        // `ADR('State')` (a literal's address, CODESYS): as the ST declaration
+                        ctx.report(
+                            Diagnostic::error(
+                                code::E0305,
+                                format!("a pointer cannot have the initial value `{}`", text.trim()),
+                            )
+                            .at(span)
+                            .with_hint("a pointer starts as NULL or as `ADR(x)` of a variable; else set it in the body (`p := ADR(x);`)"),
+                        );
+                        None
+                    }
                     Err(_) => {
                         ctx.error(
                             code::E3011,
