@@ -278,6 +278,30 @@ fn is_reference(name: &str) -> Option<il_frontend::ast::RefKind> {
     }
 }
 
+/// The variable of an initial value `ADR(x)` / `REF(x)` (a name, an element or a field; any
+/// case, blanks allowed inside the parentheses); `None` for other text.
+fn address_of(text: &str, span: diagnostics::Span) -> Option<il_frontend::ast::VarRef> {
+    let t = text.trim();
+    let (callee, rest) = t.split_at_checked(3)?;
+    if !(callee.eq_ignore_ascii_case("ADR") || callee.eq_ignore_ascii_case("REF")) {
+        return None;
+    }
+    let inner = rest.trim_start().strip_prefix('(')?.strip_suffix(')')?;
+    if inner.contains(['(', ')', '\'', '"']) {
+        return None;
+    }
+    values::var_ref(inner, span)
+}
+
+/// Whether an initial value's text is a call of `ADR` or `REF` (of anything).
+fn is_address_call(text: &str) -> bool {
+    let t = text.trim();
+    t.split_at_checked(3).is_some_and(|(callee, rest)| {
+        (callee.eq_ignore_ascii_case("ADR") || callee.eq_ignore_ascii_case("REF"))
+            && rest.trim_start().starts_with('(')
+    })
+}
+
 /// `<initialValue>`: simpleValue, arrayValue, structValue.
 /// `ty` is the declared type: a string variable's initial value written without its type's quotes (as v1.0
 /// exports and Beremiz do: `"1234"` for a STRING) is taken as the string itself.
@@ -308,6 +332,17 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
                     )));
                 }
             }
+            // `ADR(x)` / `REF(x)` of a variable (CODESYS exports a declaration's `:= ADR(x)` so):
+            // the address, as the ST declaration `p : POINTER TO INT := ADR(x);` reads it
+            if let Some(of) = address_of(text, span) {
+                return Some(Initializer::Value(il_frontend::ast::Operand::Ref(
+                    Box::new(il_frontend::ast::RefOperand {
+                        of: Some(of),
+                        span,
+                        call_scoped: false,
+                    }),
+                )));
+            }
             match values::operand(text, span) {
                 Some(op) => {
                     if let il_frontend::ast::Operand::Literal(l) = &op {
@@ -336,6 +371,18 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
                             span,
                         },
                     ))),
+                    Err(_) if is_address_call(text) => {
+                        // `ADR('State')` (a literal's address, CODESYS): as the ST declaration
+                        ctx.report(
+                            Diagnostic::error(
+                                code::E0305,
+                                format!("a pointer cannot have the initial value `{}`", text.trim()),
+                            )
+                            .at(span)
+                            .with_hint("a pointer starts as NULL or as `ADR(x)` of a variable; else set it in the body (`p := ADR(x);`)"),
+                        );
+                        None
+                    }
                     Err(_) => {
                         ctx.error(
                             code::E3011,

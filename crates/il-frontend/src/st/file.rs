@@ -155,6 +155,10 @@ pub struct PendingBody {
     /// The body is textual SFC ([`super::sfc`]): [`compile_pending`] leaves it to the SFC lowering of
     /// the caller (ladder-compiler's `sfc::text`).
     pub sfc: bool,
+    /// The body is instruction list, parsed with the file's IL (an `.st` file may hold IL bodies):
+    /// [`compile_pending`] keeps it, lowers only the actions (`actions`, each in ST or IL) and puts
+    /// a copy of each where the body calls it (`CAL Act`).
+    pub il: bool,
     /// The methods of a function block (see [`crate::actions`]: each runs, when called through an
     /// instance, as an action with hidden inputs and outputs `__M_<METHOD>_<var>` and result
     /// `__M_<METHOD>`).
@@ -193,6 +197,7 @@ impl PendingBody {
             text: String::new(),
             actions: Vec::new(),
             sfc: false,
+            il: false,
             methods: Vec::new(),
             oop: None,
             fb_init_args: Vec::new(),
@@ -1900,6 +1905,7 @@ pub fn parse_text(
                 text: String::new(),
                 actions: Vec::new(),
                 sfc: false,
+                il: false,
                 methods: Vec::new(),
                 oop: Some(Box::new(super::inherit::Oop::interface(
                     file, src, p, methods,
@@ -1918,6 +1924,28 @@ pub fn parse_text(
                 .checked_sub(1)
                 .and_then(|k| pous.get(k))
                 .filter(|q| q.actions.is_none() && q.lang == Lang::St && q.oop.is_none());
+            // ... or of the IL POU just before it (CODESYS V2.3 exports an IL program with its
+            // actions so): its body stays the IL read below, the actions are lowered with it
+            let il_owner = pi.checked_sub(1).and_then(|k| pous.get(k)).filter(|q| {
+                q.actions.is_none()
+                    && q.lang == Lang::Il
+                    && q.oop.is_none()
+                    && q.heritage.is_none()
+                    && q.methods.is_empty()
+                    && q.properties.is_empty()
+                    && !p.action_list.is_empty()
+                    && pending
+                        .last()
+                        .is_none_or(|pb| pb.name_start != q.name_range.start)
+            });
+            if let Some(q) = il_owner {
+                pending.push(PendingBody {
+                    base: q.body.start,
+                    il: true,
+                    ..PendingBody::empty(file, q.name_range.start)
+                });
+            }
+            let owner = owner.or(il_owner);
             if let (Some(q), Some(pb)) = (owner, pending.last_mut()) {
                 if pb.name_start == q.name_range.start && !p.action_list.is_empty() {
                     for (name, name_range, text) in &p.action_list {
@@ -1972,11 +2000,11 @@ pub fn parse_text(
             diags.push(
                 Diagnostic::error(
                     code::E0304,
-                    "an ACTIONS block is supported only right after a POU whose body is ST",
+                    "an ACTIONS block is supported only right after a POU whose body is ST or IL",
                 )
                 .at(Span::new(file, r.start, r.end))
                 .with_primary_label("the block starts here; it is not compiled")
-                .with_hint("put the block after the POU whose ST body calls its actions, or write each action's statements where it is called"),
+                .with_hint("put the block after the POU whose ST or IL body calls its actions, or write each action's statements where it is called"),
             );
             blank(&mut text, p.body.clone());
             continue;
@@ -2005,6 +2033,7 @@ pub fn parse_text(
                 text: body.get(p.body.clone()).unwrap_or("").to_string(),
                 actions: Vec::new(),
                 sfc: true,
+                il: false,
                 methods,
                 oop: None,
                 fb_init_args: Vec::new(),
@@ -2223,6 +2252,7 @@ pub fn parse_text(
                     text: body.get(p.body.clone()).unwrap_or("").to_string(),
                     actions: Vec::new(),
                     sfc: false,
+                    il: false,
                     methods,
                     oop: oop.map(Box::new),
                     fb_init_args: Vec::new(),
@@ -2567,6 +2597,14 @@ pub fn compile_pending(
                     continue;
                 }
                 let span = Span::new(pb.file, pb.base, pb.base + pb.text.len());
+                if pb.il {
+                    // an IL body's actions, each in ST or IL: lowered with the POU and put where
+                    // the body calls them
+                    let (temps, actions) = il_body_actions(pb, &decls, p, diags);
+                    p.var_blocks.extend(temps);
+                    standalone.extend(actions);
+                    continue;
+                }
                 let (body, temps, actions) = super::compile_body_with_actions(
                     pb.file,
                     if pb.sfc { "" } else { &pb.text },
@@ -2679,6 +2717,7 @@ pub fn add_method_vars(
     let mut defaults = Vec::new();
     let mut kept = Vec::new();
     let mut stat = Vec::new();
+    let mut externals: Vec<VarBlock> = Vec::new();
     for m in methods {
         if let Some(r) = &m.ret {
             let mut v = r.clone();
@@ -2695,6 +2734,49 @@ pub fn add_method_vars(
                 VarKind::Output => &mut outputs,
                 VarKind::Local | VarKind::Temp => &mut temps,
                 VarKind::InOut => &mut in_outs,
+                VarKind::External => {
+                    // VAR_EXTERNAL (edition 3's grammar lets a method declare `external_var_decls`
+                    // as a function does): the global itself, declared on the block once
+                    for v in &b.vars {
+                        let key = v.name.key();
+                        let clash = p.var_blocks.iter().chain(externals.iter()).any(|o| {
+                            o.vars.iter().any(|w| w.name.key() == key)
+                                && !matches!(o.kind, VarKind::External)
+                        });
+                        if clash {
+                            diags.push(
+                                Diagnostic::error(
+                                    code::E0303,
+                                    format!(
+                                        "method `{}`: VAR_EXTERNAL `{}` has the name of a variable of the block",
+                                        m.name.name, v.name.name
+                                    ),
+                                )
+                                .at(v.name.span)
+                                .with_primary_label("the block declares this name already")
+                                .with_hint("rename the block's variable: inside the method the name would mean both"),
+                            );
+                            continue;
+                        }
+                        let known = p
+                            .var_blocks
+                            .iter()
+                            .chain(externals.iter())
+                            .any(|o| o.vars.iter().any(|w| w.name.key() == key));
+                        if !known {
+                            externals.push(VarBlock {
+                                access: None,
+                                name: None,
+                                kind: VarKind::External,
+                                constant: b.constant,
+                                retain: false,
+                                vars: vec![v.clone()],
+                                span: b.span,
+                            });
+                        }
+                    }
+                    continue;
+                }
                 _ => {
                     diags.push(
                         Diagnostic::error(
@@ -2706,7 +2788,7 @@ pub fn add_method_vars(
                         )
                         .at(b.span)
                         .with_primary_label("not supported in a method")
-                        .with_hint("methods take VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR and VAR_TEMP; pass what the method changes through the block's own variables"),
+                        .with_hint("methods take VAR_INPUT, VAR_OUTPUT, VAR_IN_OUT, VAR, VAR_TEMP and VAR_EXTERNAL; pass what the method changes through the block's own variables"),
                     );
                     continue;
                 }
@@ -2743,6 +2825,7 @@ pub fn add_method_vars(
             }
         }
     }
+    p.var_blocks.extend(externals);
     let span = p.span;
     for (kind, vars, name) in [
         (VarKind::Input, inputs, None),
@@ -2881,6 +2964,91 @@ fn method_default(m: &str) -> String {
     format!("__MZ_{}", m.to_ascii_uppercase())
 }
 
+/// The actions of `p`, a POU whose body is instruction list (`pb.il`): each action's text in IL
+/// or ST (as [`body_lang`] tells), the ST ones lowered in `p`'s scope (they may call the others);
+/// a copy of each is put where `p`'s IL body calls it (`CAL Act`, `CALC Act`, `CAL Prog.Act`,
+/// [`crate::actions::inline_calls`]). Returns the temporaries of the lowering and the actions
+/// on their own, for calls through an instance ([`crate::actions::link`]).
+fn il_body_actions(
+    pb: &PendingBody,
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    diags: &mut Diagnostics,
+) -> (Vec<crate::ast::VarBlock>, Vec<crate::ast::Action>) {
+    let mut st_actions = Vec::new();
+    let mut il_actions = Vec::new();
+    for (name, text, base) in &pb.actions {
+        if body_lang(text, &lex(text).0) == Lang::St {
+            st_actions.push((name.clone(), text.clone(), *base));
+        } else {
+            let declared: Vec<&str> = p
+                .var_blocks
+                .iter()
+                .flat_map(|b| b.vars.iter())
+                .map(|v| v.name.name.as_str())
+                .collect();
+            let body = crate::parse_body_declared(name.span.file, text, *base, diags, &declared);
+            il_actions.push((name.clone(), body));
+        }
+    }
+    let span = Span::new(pb.file, pb.base, pb.base);
+    let (_, temps, mut actions) = super::compile_body_with_actions(
+        pb.file,
+        "",
+        pb.base,
+        decls,
+        p,
+        &st_actions,
+        &il_actions,
+        span,
+        diags,
+    );
+    for (name, body) in &il_actions {
+        actions.push(crate::ast::Action {
+            pou: p.name.clone(),
+            name: name.clone(),
+            body: body.clone(),
+            temps: None,
+            method_inputs: None,
+            method_defaults: Vec::new(),
+            diagnostics: Vec::new(),
+        });
+    }
+    let map: std::collections::HashMap<String, Vec<crate::ast::IlStmt>> = actions
+        .iter()
+        .map(|a| (a.name.key(), a.body.clone()))
+        .collect();
+    let is_var = crate::actions::declares(p);
+    let mut body = std::mem::take(&mut p.body);
+    crate::actions::drop_own_name(&mut body, p, &map, &is_var);
+    let mut next = 0;
+    let mut local = Diagnostics::new();
+    p.body = crate::actions::inline_calls(body, &map, &is_var, "__A", &mut next, &mut local);
+    // an IL action's own calls of the others, for its runs through an instance
+    for a in actions
+        .iter_mut()
+        .filter(|a| il_actions.iter().any(|(n, _)| n.key() == a.name.key()))
+    {
+        let mut own = std::mem::take(&mut a.body);
+        crate::actions::drop_own_name(&mut own, p, &map, &is_var);
+        a.body = crate::actions::inline_calls(own, &map, &is_var, "__A", &mut next, &mut local);
+    }
+    // a recursion is found from every place that enters it: reported once per call
+    let mut seen = std::collections::HashSet::new();
+    for d in local {
+        if seen.insert((d.code, d.span.map(|s| (s.start, s.end)), d.message.clone())) {
+            diags.push(d);
+        }
+    }
+    // the ST actions' own diagnostics, as where an ST body calls them
+    for a in &mut actions {
+        for d in std::mem::take(&mut a.diagnostics) {
+            diags.push(d);
+        }
+    }
+    (temps, actions)
+}
+
 /// Puts a copy of a method's statements where the block's body, or one of its methods, calls it
 /// (`M(...)` inside the block, lowered to `CAL M` by [`super::PouLowering`]); a method that calls
 /// itself, directly or through another, is E0106 at the call.
@@ -2992,7 +3160,13 @@ fn lower_method_as(
 ) -> Option<crate::ast::Action> {
     use crate::actions::{instantiate, method_result, method_var};
     use crate::ast::{VarBlock, VarKind};
-    let mut own: Vec<VarBlock> = m.blocks.clone();
+    // (its VAR_EXTERNAL are the block's: `add_method_vars`)
+    let mut own: Vec<VarBlock> = m
+        .blocks
+        .iter()
+        .filter(|b| !matches!(b.kind, VarKind::External))
+        .cloned()
+        .collect();
     if let Some(r) = &m.ret {
         own.push(VarBlock::locals(vec![r.clone()], r.span));
     }
