@@ -3010,7 +3010,9 @@ fn il_body_actions(
             body: body.clone(),
             temps: None,
             method_inputs: None,
+            method_outputs: Vec::new(),
             method_defaults: Vec::new(),
+            access: None,
             diagnostics: Vec::new(),
         });
     }
