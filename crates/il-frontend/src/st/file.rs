@@ -85,7 +85,7 @@ pub struct PouText {
     /// `methods`, checked against the blocks that implement it; `body` is the whole block).
     pub interface: Option<Range<usize>>,
     /// A `CLASS ... END_CLASS` (edition 3, 6.6.5): read as a function block without a body, the
-    /// range of its `CLASS` keyword ([`super::classes`]).
+    /// range of its `CLASS` keyword (`st::classes`).
     pub class: Option<Range<usize>>,
 }
 
@@ -1294,7 +1294,7 @@ fn body_lang(src: &str, toks: &[Token]) -> Lang {
 /// The language of a text given no file extension: XML when it starts with `<`, ST when one of its
 /// POU bodies is ST, or when it holds no POU but a `{` pragma (a CODESYS global variable list
 /// `{attribute 'qualified_only'} VAR_GLOBAL ...`: only the ST reader reads pragmas), or no POU but
-/// ST statements ([`body_lang`]), IL otherwise.
+/// ST statements (`body_lang`), IL otherwise.
 pub fn detect(src: &str) -> Lang {
     let t = src.trim_start_matches('\u{feff}').trim_start();
     if t.starts_with('<') {
