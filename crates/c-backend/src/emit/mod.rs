@@ -421,7 +421,7 @@ impl<'a> Gen<'a> {
     }
 
     /// Whether a block's struct may be read through its base's (EXTENDS; `st::base_view`): it
-    /// is then defined as a typedef of an unnamed struct with the may-alias attribute.
+    /// is then defined with the may-alias attribute.
     fn viewed(p: &il_frontend::sema::model::Pou) -> bool {
         p.vars
             .first()
@@ -436,10 +436,11 @@ impl<'a> Gen<'a> {
         let mut base_view_macro = false;
         // every block's and program's struct named before any is defined: a member may point to
         // an instance of a block defined later, or of its own (a method's `VAR_IN_OUT profile :
-        // ProfileDesc` inside `ProfileDesc`: Struckig)
+        // ProfileDesc` inside `ProfileDesc`: Struckig; a class's method taking an instance of its
+        // own class or of its base, `VAR_IN_OUT o : Base`, IEC 61131-3 ed. 3 6.6.5)
         let mut forward = false;
         for p in &self.model.pous {
-            if p.kind != PouKind::Function && !Self::viewed(p) {
+            if p.kind != PouKind::Function {
                 let name = self.pou_struct(p);
                 let _ = writeln!(h, "typedef struct {name} {name};");
                 forward = true;
@@ -483,7 +484,8 @@ impl<'a> Gen<'a> {
                         h.push_str("#if defined(__GNUC__)\n#define LADDERC_BASE_VIEW __attribute__((__may_alias__))\n#else\n#define LADDERC_BASE_VIEW\n#endif\n\n");
                     }
                     if viewed {
-                        let _ = writeln!(h, "typedef struct {{");
+                        // the tag named by the forward typedef, the attribute on the definition
+                        let _ = writeln!(h, "struct LADDERC_BASE_VIEW {name} {{");
                     } else {
                         let _ = writeln!(h, "struct {name} {{");
                     }
@@ -502,11 +504,7 @@ impl<'a> Gen<'a> {
                     if !any {
                         h.push_str("    char unused_;\n");
                     }
-                    if viewed {
-                        let _ = writeln!(h, "}} LADDERC_BASE_VIEW {name};");
-                    } else {
-                        let _ = writeln!(h, "}};");
-                    }
+                    let _ = writeln!(h, "}};");
                     let _ = writeln!(h, "void {name}_INIT({name} *self);");
                     let _ = writeln!(h, "void {name}_BODY({name} *self);\n");
                 }

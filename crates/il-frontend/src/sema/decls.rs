@@ -271,11 +271,17 @@ impl Analyzer<'_> {
         }
         // Configuration globals (needed by VAR_EXTERNAL).
         let mut configs = Vec::new();
+        // (configuration, resource, the variable's name span, its held initial value)
+        let mut deferred_config: Vec<(usize, Option<usize>, Span, ast::Initializer)> = Vec::new();
         for unit in units {
             for item in &unit.items {
                 if let LibraryElement::Configuration(c) = item {
                     let config = self.model.configurations.len();
-                    let globals = self.declare_vars(&c.globals, &global_consts, None);
+                    // a global instance of a block or class initialized by its variables
+                    // (`c1 : C := (z := 1)`) is read once the blocks' variables are declared
+                    let (held, c_globals) = self.hold_block_inits(&c.globals);
+                    deferred_config.extend(held.into_iter().map(|(at, i)| (config, None, at, i)));
+                    let globals = self.declare_vars(&c_globals, &global_consts, None);
                     self.record_lists(&c.globals, &globals, |index| GlobalRef::Configuration {
                         config,
                         index,
@@ -285,7 +291,12 @@ impl Analyzer<'_> {
                         .iter()
                         .enumerate()
                         .map(|(resource, r)| {
-                            let globals = self.declare_vars(&r.globals, &global_consts, None);
+                            let (held, r_globals) = self.hold_block_inits(&r.globals);
+                            deferred_config.extend(
+                                held.into_iter()
+                                    .map(|(at, i)| (config, Some(resource), at, i)),
+                            );
+                            let globals = self.declare_vars(&r_globals, &global_consts, None);
                             self.record_lists(&r.globals, &globals, |index| GlobalRef::Resource {
                                 config,
                                 resource,
@@ -319,6 +330,24 @@ impl Analyzer<'_> {
             let ty = self.model.globals[i].ty.clone();
             let value = self.const_init(&init, &ty, &global_consts);
             self.model.globals[i].init = value;
+        }
+        for (c, r, at, init) in deferred_config {
+            let config = &self.model.configurations[c];
+            let globals = match r {
+                Some(r) => &config.resources[r].globals,
+                None => &config.globals,
+            };
+            let Some(i) = globals.iter().position(|v| v.span == at) else {
+                continue;
+            };
+            let ty = globals[i].ty.clone();
+            let value = self.const_init(&init, &ty, &global_consts);
+            let config = &mut self.model.configurations[c];
+            let globals = match r {
+                Some(r) => &mut config.resources[r].globals,
+                None => &mut config.globals,
+            };
+            globals[i].init = value;
         }
         // `ADR(x)` in a global's initial value (`fb : FB_M := (pLamp := ADR(GVL.lamp))`)
         self.global_address_initial_values(units);
@@ -997,6 +1026,38 @@ impl Analyzer<'_> {
         true
     }
 
+    /// The blocks without the structured initial values of their instances of user blocks and
+    /// classes (whose variables are not declared yet): those values, keyed by the variable's name
+    /// span, and the blocks to declare (the same ones, copied only when one was taken out).
+    fn hold_block_inits<'b>(
+        &self,
+        blocks: &'b [ast::VarBlock],
+    ) -> (
+        Vec<(Span, ast::Initializer)>,
+        std::borrow::Cow<'b, [ast::VarBlock]>,
+    ) {
+        let is_held = |d: &ast::VarDecl| {
+            matches!(d.init, Some(ast::Initializer::Struct(..)))
+                && matches!(&d.ty, TypeRef::Named(n) if self.pou_names.contains_key(&n.key()))
+        };
+        let held: Vec<(Span, ast::Initializer)> = blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .filter(|d| is_held(d))
+            .filter_map(|d| d.init.clone().map(|i| (d.name.span, i)))
+            .collect();
+        if held.is_empty() {
+            return (held, std::borrow::Cow::Borrowed(blocks));
+        }
+        let mut copy = blocks.to_vec();
+        for d in copy.iter_mut().flat_map(|b| b.vars.iter_mut()) {
+            if is_held(d) {
+                d.init = None;
+            }
+        }
+        (held, std::borrow::Cow::Owned(copy))
+    }
+
     /// The initial value a named alias type gives (`TYPE T : INT := 5`).
     fn type_default_init(&mut self, tr: &TypeRef) -> Option<ConstValue> {
         if let TypeRef::Named(n) = tr {
@@ -1433,17 +1494,41 @@ impl Analyzer<'_> {
                             .iter()
                             .find(|p| name.is(p.name) && p.dir == super::stdlib::Dir::Input)
                             .map(|p| Type::Elementary(p.ty)),
-                        Type::Fb(FbType::User(id)) => self.model.pous[id.0 as usize]
-                            .vars
-                            .iter()
-                            .find(|v| {
-                                v.is(&name.name)
-                                    && matches!(
-                                        v.kind,
-                                        VarKind::Input | VarKind::Local | VarKind::Output
-                                    )
-                            })
-                            .map(|v| v.ty.clone()),
+                        Type::Fb(FbType::User(id)) => {
+                            let pou = &self.model.pous[id.0 as usize];
+                            // a class's PRIVATE or PROTECTED variable is not set from outside
+                            // (IEC 61131-3 ed. 3 6.6.5.3; PUBLIC and INTERNAL ones are)
+                            let hidden = pou
+                                .access
+                                .iter()
+                                .find(|(n, _)| name.is(n))
+                                .map(|&(_, a)| a)
+                                .filter(|a| *a != crate::ast::Access::Public);
+                            if let Some(a) = hidden {
+                                let (pn, kw) = (pou.name.clone(), a.keyword());
+                                self.error(
+                                    code::E1025,
+                                    name.span,
+                                    format!(
+                                        "`{}` is {kw} to `{pn}`: an initial value sets only its PUBLIC variables",
+                                        name.name
+                                    ),
+                                )
+                                .label(format!("a {kw} variable"))
+                                .hint(format!("set it in a method of `{pn}`, or declare it in a VAR PUBLIC block"));
+                                continue;
+                            }
+                            pou.vars
+                                .iter()
+                                .find(|v| {
+                                    v.is(&name.name)
+                                        && matches!(
+                                            v.kind,
+                                            VarKind::Input | VarKind::Local | VarKind::Output
+                                        )
+                                })
+                                .map(|v| v.ty.clone())
+                        }
                         _ => {
                             let t = self.type_name(ty);
                             self.error(

@@ -9,6 +9,7 @@
 
 mod address_init;
 mod bit_arith;
+mod block_cycles;
 mod body;
 mod calls;
 mod decls;
@@ -112,6 +113,8 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         unknown_enum_uses: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
+    // a block holding an instance of itself by value has no size: E1080, the variable cut
+    a.check_block_cycles();
     a.check_containment();
     // Room for every instruction's info (and about one name each) at once: no regrowth of big tables.
     let instrs: usize = pous.iter().map(|(_, p)| body::count_instrs(&p.body)).sum();

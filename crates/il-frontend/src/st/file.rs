@@ -2805,7 +2805,12 @@ pub fn add_method_vars(
                     VarKind::Local | VarKind::Temp => !inst && !is_stat,
                     _ => false,
                 };
-                if per_call && !matches!(v.ty, crate::ast::TypeRef::Ref { .. }) {
+                // a local of the block's own type (an instance of its own class, IEC 61131-3
+                // ed. 3 6.6.5) is no variable of the instance (a C local of the call), and a
+                // block instance does not restart per call (`Declarations::resets_per_call`):
+                // no copy of its initial value, which the instance would hold inside itself
+                let own = !matches!(b.kind, VarKind::Input) && holds_pou(&v.ty, &p.name);
+                if per_call && !own && !matches!(v.ty, crate::ast::TypeRef::Ref { .. }) {
                     // never written: the value a call that leaves the input out passes, and the
                     // value a local starts each call with
                     let mut d = v.clone();
@@ -3464,6 +3469,15 @@ fn types_after(unit: &CompilationUnit, ends: &[usize]) -> Vec<crate::ast::Ident>
                 .map(|t| t.name.clone())
         })
         .collect()
+}
+
+/// Whether a variable of type `ty` holds an instance of the POU `pou` by value (through arrays).
+fn holds_pou(ty: &crate::ast::TypeRef, pou: &crate::ast::Ident) -> bool {
+    match ty {
+        crate::ast::TypeRef::Named(n) => n.is(&pou.name),
+        crate::ast::TypeRef::Array { element, .. } => holds_pou(element, pou),
+        _ => false,
+    }
 }
 
 #[cfg(test)]

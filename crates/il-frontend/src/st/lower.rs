@@ -1852,6 +1852,14 @@ impl<'d> PouLowering<'d> {
                             },
                         ..
                     }] => p,
+                    // `REF(THIS)`, `ADR(THIS)`: THIS is no variable of its own but the instance's
+                    // reference (IEC 61131-3 ed. 3 6.6.5.6) or pointer (CODESYS, TwinCAT), which
+                    // the parser reads as `ADR(THIS^)`: the instance's address, as `THIS` alone
+                    [Arg {
+                        name: None, value, ..
+                    }] if super::refs::is_address_of(name) && bare_this(value).is_some() => {
+                        bare_this(value)?
+                    }
                     // `r REF= 0;` (TwinCAT): the reference refers to nothing (`__ISVALIDREF(r)`
                     // is FALSE), as a pointer set to 0
                     [Arg {
@@ -3179,4 +3187,26 @@ fn is_access_assign(value: &Expr) -> bool {
 fn is_ref_assign(value: &Expr) -> bool {
     matches!(&value.kind, ExprKind::Call { name, .. }
         if name.is(super::refs::REF_ASSIGN) || name.is(super::refs::REF_ASSIGN_CALL))
+}
+
+/// The place `THIS^` when `e` is the parser's reading of a bare `THIS` (`ADR(THIS^)`).
+fn bare_this(e: &Expr) -> Option<&Place> {
+    let ExprKind::Call { name, args } = &e.kind else {
+        return None;
+    };
+    let [Arg {
+        name: None,
+        value: Expr {
+            kind: ExprKind::Place(p),
+            ..
+        },
+        ..
+    }] = &args[..]
+    else {
+        return None;
+    };
+    (name.is("ADR")
+        && matches!(&p.base, PlaceBase::Name(n) if n.is("THIS"))
+        && matches!(p.accessors[..], [Accessor::Deref(_)]))
+    .then_some(p)
 }
