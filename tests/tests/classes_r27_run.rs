@@ -396,3 +396,87 @@ END_PROGRAM
         "{lines:?}"
     );
 }
+
+/// The access specifier of a method in CODESYS's PLCopen XML (`<AccessModifiers Private="true" />`
+/// in the vendor data of the method's interface) is checked as `METHOD PRIVATE` in text: a call
+/// from another POU is E1021 (before: not read, the call compiled, and W3002 said the block was
+/// ignored).
+#[test]
+fn a_private_method_in_plcopen_xml_is_not_called_from_outside() {
+    let fixture = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/real_gaps/xml_methods.xml");
+    let src = std::fs::read_to_string(fixture).unwrap();
+    let plain = "<Method name=\"M_Home\" ObjectId=\"7e2d9b40-1c3a-4f5e-8a6b-2c4d6e8f0a13\">\n              <interface />";
+    assert!(src.contains(plain));
+    let private = src.replace(
+        plain,
+        "<Method name=\"M_Home\" ObjectId=\"7e2d9b40-1c3a-4f5e-8a6b-2c4d6e8f0a13\">\n              <interface><addData><data name=\"http://www.3s-software.com/plcopenxml/accessmodifiers\" handleUnknown=\"implementation\"><AccessModifiers Private=\"true\" /></data></addData></interface>",
+    );
+    let (code, lines) = check_text("m.xml", &private);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with(
+            "m.xml:63:10: error[E1021]: METHOD `M_Home` is PRIVATE to `FB_Axis`: callable only in `FB_Axis` itself"
+        ),
+        "{lines:?}"
+    );
+    // PUBLIC (and INTERNAL) restrict nothing: the project compiles, without W3002
+    let public = private.replace("Private=\"true\"", "Public=\"true\"");
+    let (code, lines) = check_text("m.xml", &public);
+    assert_eq!(code, Some(0), "{lines:?}");
+    assert!(!lines.iter().any(|l| l.contains("W3002")), "{lines:?}");
+}
+
+/// A TwinCAT `.TcPOU`'s `<Method>` declared `METHOD PRIVATE` is E1021 when called from another
+/// POU, as in `.st`.
+#[test]
+fn a_private_method_in_a_tcpou_is_not_called_from_outside() {
+    let dir = tempfile::tempdir().unwrap();
+    write_in(
+        dir.path(),
+        "FB_A.TcPOU",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>
+<TcPlcObject Version=\"1.1.0.1\">
+  <POU Name=\"FB_A\" Id=\"{1}\" SpecialFunc=\"None\">
+    <Declaration><![CDATA[FUNCTION_BLOCK FB_A
+VAR n : INT := 3; END_VAR
+]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[]]></ST>
+    </Implementation>
+    <Method Name=\"M\" Id=\"{2}\">
+      <Declaration><![CDATA[METHOD PRIVATE M : INT
+]]></Declaration>
+      <Implementation>
+        <ST><![CDATA[M := n;]]></ST>
+      </Implementation>
+    </Method>
+  </POU>
+</TcPlcObject>
+",
+    );
+    write_in(
+        dir.path(),
+        "MAIN.TcPOU",
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>
+<TcPlcObject Version=\"1.1.0.1\">
+  <POU Name=\"MAIN\" Id=\"{3}\" SpecialFunc=\"None\">
+    <Declaration><![CDATA[PROGRAM MAIN
+VAR a : FB_A; x : INT; END_VAR
+]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[x := a.M();]]></ST>
+    </Implementation>
+  </POU>
+</TcPlcObject>
+",
+    );
+    let (code, _, stderr) = in_dir(dir.path(), &["check", "FB_A.TcPOU", "MAIN.TcPOU"]);
+    assert_eq!(code, Some(1), "{stderr}");
+    assert_eq!(stderr.matches("error[").count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("MAIN.TcPOU:8:27: error[E1021]: METHOD `M` is PRIVATE to `FB_A`"),
+        "{stderr}"
+    );
+}

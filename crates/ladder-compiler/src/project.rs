@@ -662,8 +662,15 @@ fn is_read_vendor_data(name: &str) -> bool {
 fn vendor_data(ctx: &mut Ctx, root: &Element) {
     let mut found: Vec<&Element> = Vec::new();
     let mut ignored_name: Vec<(usize, &str)> = Vec::new();
-    let mut stack = vec![root];
-    while let Some(e) = stack.pop() {
+    // (element, its parent's name)
+    let mut stack = vec![(root, "")];
+    while let Some((e, parent)) = stack.pop() {
+        // the access specifier of a method, a property or an accessor (`xml_member_access`)
+        let member_interface = e.name() == "interface"
+            && matches!(
+                parent,
+                "Method" | "Property" | "GetAccessor" | "SetAccessor"
+            );
         for c in e.children {
             if c.name() == "addData" {
                 let mut ignored = c.children.iter().any(|d| d.name() != "data");
@@ -671,8 +678,9 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
                     let name = d.attr("name").unwrap_or("");
                     if d.child("textDeclaration").is_some() {
                         // an interface's declarations as text (`text_declaration`)
+                    } else if member_interface && name.ends_with("/accessmodifiers") {
                     } else if is_read_vendor_data(name) {
-                        stack.push(d);
+                        stack.push((d, c.name()));
                     } else {
                         ignored = true;
                         ignored_name.push((c.tag_start(), name));
@@ -684,7 +692,7 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
             } else if c.name() == "vendorElement" {
                 found.push(c);
             } else {
-                stack.push(c);
+                stack.push((c, e.name()));
             }
         }
     }
@@ -1009,11 +1017,59 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
                 inst: Vec::new(),
                 once: Vec::new(),
                 local_inits: Vec::new(),
-                access: None,
+                access: member_access(m)
+                    .map(|a| restricted(ctx, m, &pou.name.name, name, "METHOD", a)),
             });
         }
     }
     out
+}
+
+/// The access specifier CODESYS writes in a method's, property's or accessor's interface
+/// (`<interface><addData><data name=".../accessmodifiers"><AccessModifiers Private="true" />`),
+/// when it restricts the member (PRIVATE, PROTECTED; PUBLIC and INTERNAL do not), as the ST front
+/// end reads `METHOD PRIVATE M` in text.
+fn member_access(m: &Element) -> Option<il_frontend::ast::Access> {
+    let modifiers = m
+        .child("interface")?
+        .children_named("addData")
+        .flat_map(|a| a.children_named("data"))
+        .filter(|d| {
+            d.attr("name")
+                .is_some_and(|n| n.ends_with("/accessmodifiers"))
+        })
+        .find_map(|d| d.child("AccessModifiers"))?;
+    let set = |a: &str| {
+        modifiers
+            .attr(a)
+            .is_some_and(|v| v.trim().eq_ignore_ascii_case("true"))
+    };
+    if set("Private") {
+        Some(il_frontend::ast::Access::Private)
+    } else if set("Protected") {
+        Some(il_frontend::ast::Access::Protected)
+    } else {
+        None
+    }
+}
+
+/// The restriction of member `name` (element `m`) of block `pou`, declared at its name.
+fn restricted(
+    ctx: &Ctx,
+    m: &Element,
+    pou: &str,
+    name: &str,
+    what: &'static str,
+    access: il_frontend::ast::Access,
+) -> il_frontend::ast::MemberAccess {
+    il_frontend::ast::MemberAccess {
+        access,
+        owner: pou.to_ascii_uppercase(),
+        owner_name: pou.to_string(),
+        member: name.to_string(),
+        at: ctx.attr_span(m, "name"),
+        what,
+    }
 }
 
 /// A PROPERTY of CODESYS's vendor data as the methods of its accessors (see [`xml_methods`]).
@@ -1064,7 +1120,25 @@ fn xml_property(
         };
         *slot = Some((blocks, t.text, t.base));
     }
-    il_frontend::st::property::accessor_methods(&ident, &ty, get, set)
+    // the accessor's own specifier (`SET PROTECTED`), else the property's
+    let own = |kind: &str| {
+        accessors
+            .iter()
+            .find(|a| a.name() == kind)
+            .and_then(|a| member_access(a))
+            .or_else(|| member_access(m))
+    };
+    let (get_access, set_access) = (own("GetAccessor"), own("SetAccessor"));
+    let mut methods = il_frontend::st::property::accessor_methods(&ident, &ty, get, set);
+    for pm in &mut methods {
+        let is_get = pm
+            .name
+            .name
+            .starts_with(il_frontend::st::property::GET_PREFIX);
+        let access = if is_get { get_access } else { set_access };
+        pm.access = access.map(|a| restricted(ctx, m, pou, name, "PROPERTY", a));
+    }
+    methods
 }
 
 /// The interface of a POU read from any input (its pins, internals and result), as other PLCopen
