@@ -13,7 +13,10 @@
 //!   give the instance's address, as `THIS` and `REF(THIS^)` do (before: E3103);
 //! - a class's PUBLIC variable is set in a structured initial value, in a configuration's
 //!   VAR_GLOBAL as in a program's VAR (before: E1025 "C has no field or input"); a PRIVATE one is
-//!   E1025 naming the specifier.
+//!   E1025 naming the specifier;
+//! - the access specifiers CODESYS writes for methods, properties and accessors in PLCopen XML
+//!   (`<AccessModifiers Private="true" />`) are checked as in text (before: not read, W3002), and
+//!   a TwinCAT `.TcPOU`'s `METHOD PRIVATE` is (as before) E1021 from another POU.
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -478,5 +481,50 @@ VAR a : FB_A; x : INT; END_VAR
     assert!(
         stderr.contains("MAIN.TcPOU:8:27: error[E1021]: METHOD `M` is PRIVATE to `FB_A`"),
         "{stderr}"
+    );
+}
+
+/// A property's specifier in CODESYS's PLCopen XML (PROTECTED), overridden by its Get accessor's
+/// own (PUBLIC): from another POU the write is E1021, the read compiles.
+#[test]
+fn a_protected_property_in_plcopen_xml_with_a_public_getter() {
+    let fixture = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/real_gaps/xml_methods.xml");
+    let src = std::fs::read_to_string(fixture).unwrap();
+    let start = src
+        .find("<data name=\"http://www.3s-software.com/plcopenxml/method\" handleUnknown=\"implementation\">\n            <Method name=\"M_Home\"")
+        .unwrap();
+    let end = start + src[start..].find("</data>").unwrap() + "</data>".len();
+    let modifier = |m: &str| {
+        format!("<addData><data name=\"http://www.3s-software.com/plcopenxml/accessmodifiers\" handleUnknown=\"implementation\"><AccessModifiers {m}=\"true\" /></data></addData>")
+    };
+    let property = format!(
+        "<data name=\"http://www.3s-software.com/plcopenxml/property\" handleUnknown=\"implementation\">
+            <Property name=\"P_Pos\" ObjectId=\"7e2d9b40-1c3a-4f5e-8a6b-2c4d6e8f0a99\">
+              <interface><returnType><REAL /></returnType>{}</interface>
+              <GetAccessor>
+                <interface>{}</interface>
+                <body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">P_Pos := rPosition;</xhtml></ST></body>
+              </GetAccessor>
+              <SetAccessor>
+                <body><ST><xhtml xmlns=\"http://www.w3.org/1999/xhtml\">rPosition := P_Pos;</xhtml></ST></body>
+              </SetAccessor>
+            </Property>
+          </data>",
+        modifier("Protected"),
+        modifier("Public")
+    );
+    let text = format!("{}{property}{}", &src[..start], &src[end..]).replace(
+        "  fbAxis.M_Home();",
+        "  fbAxis.P_Pos := 0.0; rLast := fbAxis.P_Pos;",
+    );
+    let (code, lines) = check_text("p.xml", &text);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with(
+            "p.xml:68:10: error[E1021]: the Set accessor of PROPERTY `P_Pos` is PROTECTED to `FB_Axis`"
+        ),
+        "{lines:?}"
     );
 }

@@ -1027,9 +1027,9 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
 
 /// The access specifier CODESYS writes in a method's, property's or accessor's interface
 /// (`<interface><addData><data name=".../accessmodifiers"><AccessModifiers Private="true" />`),
-/// when it restricts the member (PRIVATE, PROTECTED; PUBLIC and INTERNAL do not), as the ST front
-/// end reads `METHOD PRIVATE M` in text.
-fn member_access(m: &Element) -> Option<il_frontend::ast::Access> {
+/// as the ST front end reads `METHOD PRIVATE M` in text: `None` when none is written,
+/// `Some(None)` for one that restricts nothing (PUBLIC, INTERNAL).
+fn written_access(m: &Element) -> Option<Option<il_frontend::ast::Access>> {
     let modifiers = m
         .child("interface")?
         .children_named("addData")
@@ -1044,13 +1044,18 @@ fn member_access(m: &Element) -> Option<il_frontend::ast::Access> {
             .attr(a)
             .is_some_and(|v| v.trim().eq_ignore_ascii_case("true"))
     };
-    if set("Private") {
+    Some(if set("Private") {
         Some(il_frontend::ast::Access::Private)
     } else if set("Protected") {
         Some(il_frontend::ast::Access::Protected)
     } else {
         None
-    }
+    })
+}
+
+/// The restricting access specifier written for `m` (see [`written_access`]).
+fn member_access(m: &Element) -> Option<il_frontend::ast::Access> {
+    written_access(m).flatten()
 }
 
 /// The restriction of member `name` (element `m`) of block `pou`, declared at its name.
@@ -1125,8 +1130,8 @@ fn xml_property(
         accessors
             .iter()
             .find(|a| a.name() == kind)
-            .and_then(|a| member_access(a))
-            .or_else(|| member_access(m))
+            .and_then(|a| written_access(a))
+            .unwrap_or_else(|| member_access(m))
     };
     let (get_access, set_access) = (own("GetAccessor"), own("SetAccessor"));
     let mut methods = il_frontend::st::property::accessor_methods(&ident, &ty, get, set);
