@@ -158,25 +158,34 @@ END_PROGRAM
 }
 
 /// A block's own VAR array of addresses of its variables is per instance; an array of instances
-/// starts each one's pointer input at its own variable.
+/// starts each one's pointer input at its own variable; a function's VAR array of addresses
+/// starts at each call (a NULL element stays NULL).
 #[test]
 fn addresses_start_a_blocks_array_and_an_array_of_instances() {
-    let src = "FUNCTION_BLOCK FB_Read
+    let src = "FUNCTION F_Own : INT
+VAR c : INT := 6; ps : ARRAY[0..1] OF POINTER TO INT := [ADR(c), NULL]; END_VAR
+F_Own := ps[0]^;
+IF ps[1] = 0 THEN F_Own := F_Own + 100; END_IF
+c := 0;
+END_FUNCTION
+FUNCTION_BLOCK FB_Read
 VAR_INPUT pin : POINTER TO INT; END_VAR
 VAR_OUTPUT s : INT; END_VAR
 VAR a : INT := 5; b : INT := 6; ps : ARRAY[0..1] OF POINTER TO INT := [ADR(b), ADR(a)]; END_VAR
 s := ps[0]^ * 10 + ps[1]^ + pin^ * 100;
 END_FUNCTION_BLOCK
 PROGRAM Main
-VAR k : INT := 2; j : INT := 3; fbs : ARRAY[0..1] OF FB_Read := [(pin := ADR(k)), (pin := ADR(j))]; x, y : INT; END_VAR
+VAR k : INT := 2; j : INT := 3; fbs : ARRAY[0..1] OF FB_Read := [(pin := ADR(k)), (pin := ADR(j))]; x, y, z : INT; END_VAR
 fbs[0](); fbs[1]();
 x := fbs[0].s; y := fbs[1].s;
+z := F_Own();
 END_PROGRAM
 ";
-    let (trace, stderr) = run_text("adr_fb.st", src, 1, "Main.x,Main.y");
+    let (trace, stderr) = run_text("adr_fb.st", src, 2, "Main.x,Main.y,Main.z");
     assert!(!stderr.contains("error"), "{stderr}");
-    assert_eq!(column(&trace, "Main.x"), vec![265.0]);
-    assert_eq!(column(&trace, "Main.y"), vec![365.0]);
+    assert_eq!(column(&trace, "Main.x"), vec![265.0, 265.0]);
+    assert_eq!(column(&trace, "Main.y"), vec![365.0, 365.0]);
+    assert_eq!(column(&trace, "Main.z"), vec![106.0, 106.0]);
 }
 
 /// What cannot start an element is one located error each: an address stored into an INT

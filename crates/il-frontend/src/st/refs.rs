@@ -290,9 +290,14 @@ impl RefTypes {
             if let Some(t) = toks.get(j) {
                 self.addresses.insert(base + t.range.start, target);
             }
-        } else if kind != Some(RefKind::Reference) && !ref_eq && address_array(value, value_span) {
+        } else if kind != Some(RefKind::Reference)
+            && !ref_eq
+            && !self.in_method
+            && address_array(value, value_span)
+        {
             // `p : ARRAY[0..1] OF POINTER TO INT := [ADR(a), ADR(b)];` (CODESYS, TwinCAT): left
-            // for the declaration, each element an address (`sema::address_init`)
+            // for the declaration, each element an address (`sema::address_init`; a method's
+            // variables start at each call, `method_inits`: E0305 there)
             return;
         } else if self.one_method_var
             && (super::method_inits::is_run_time_value(&toks[k + 1..end])
