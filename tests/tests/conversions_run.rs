@@ -466,8 +466,15 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
                 if is_time(to) {
                     Want::Ns(*ns)
                 } else if is_date(to) {
-                    // TIME_TO_TOD (CODESYS): the time of day of the duration
-                    Want::Text(date_text(to, ns.rem_euclid(86_400_000_000_000)))
+                    // the same point of the time line from 1970-01-01-00:00 (round 27): TIME_TO_TOD
+                    // (CODESYS) the time of day of the duration, TIME_TO_DATE its day,
+                    // TIME_TO_DT the instant
+                    let day = 86_400_000_000_000i128;
+                    Want::Text(match kind(to) {
+                        "DATE" => date_text(to, ns.div_euclid(day) * day),
+                        "TOD" => date_text(to, ns.rem_euclid(day)),
+                        _ => date_text(to, *ns),
+                    })
                 } else if is_real(to) {
                     real_of(to, *ns as f64 / 1e6)
                 } else {

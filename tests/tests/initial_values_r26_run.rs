@@ -6,8 +6,8 @@
 //!   through an instance's output and from a plain global pointer (before: the `ADR` element
 //!   silently dropped, the pointer NULL, the run ending "NULL reference dereferenced"); nested
 //!   instance initializers keep their addresses too (before: silently dropped); where no address
-//!   is taken (a located variable, an element of an array's initial value) one E0305 (before:
-//!   silent);
+//!   is taken (a located variable; until round 27 an element of an array's initial value) one
+//!   E0305 (before: silent);
 //! - a structure type's field initialised with a structure of a type declared below it (ST, and
 //!   PLCopen XML `<dataTypes>` as OSCAT exports them) runs (before: E1025 at every member);
 //! - a PLCopen XML `simpleValue` holding an integer constant expression (`((1024 * 1024) * 30)`,
@@ -164,8 +164,9 @@ END_PROGRAM
 }
 
 /// Where no address is taken the initial value is refused, one located E0305 each: a located
-/// global, an unknown name, and the elements of an array's initial value (one for the array; in
-/// a global list and in a program). Before: silently NULL.
+/// global, an unknown name. Before: silently NULL. (The elements of an array's initial value, in a
+/// global list and in a program, were refused too until round 27, which starts them:
+/// `misc_r27_run.rs`; none is reported here.)
 #[test]
 fn an_address_that_cannot_start_is_one_e0305() {
     assert_eq!(
@@ -190,9 +191,7 @@ END_PROGRAM
         ),
         [
             "links.st:5:27: error[E0305]: `pL` cannot start as `ADR(lamp)`: a located variable lives in the process image, which has no address",
-            "links.st:6:43: error[E0305]: `arr` cannot start as `ADR(x)`: an element of an array's initial value does not start as an address",
             "links.st:7:26: error[E0305]: `l2.p` cannot start as `ADR(nosuch)`: `nosuch` is no global variable",
-            "links.st:12:44: error[E0305]: `arr2` cannot start as `ADR(y)`: an element of an array's initial value does not start as an address",
         ]
     );
 }

@@ -126,9 +126,10 @@ END_PROGRAM
 }
 
 /// A DATE widens to an LDATE where one is expected (as TIME to LTIME), but an LDT does not
-/// narrow to a DT without its conversion, and a DATE has no conversion to an LDT (it holds no
-/// time of day: IEC 61131-3 edition 3 lists none). Edition-2 projects that name a variable
-/// `ldt` or `ldate` keep compiling: the names are not reserved.
+/// narrow to a DT without its conversion. Edition-2 projects that name a variable `ldt` or
+/// `ldate` keep compiling: the names are not reserved. (`DATE_TO_LDT`, which IEC 61131-3 edition
+/// 3 does not list, was E1019 until round 27: CODESYS and TwinCAT convert every date and time type
+/// to every other, `misc_r27_run.rs`.)
 #[test]
 fn long_dates_widen_but_never_narrow_silently() {
     let (code, lines) = check_text(
@@ -149,13 +150,9 @@ END_PROGRAM
 ",
     );
     assert_eq!(code, Some(1), "{lines:?}");
-    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
         lines[0].starts_with("narrow.st:11:1: error[E1006]: cannot store LDT into DT"),
-        "{lines:?}"
-    );
-    assert!(
-        lines[1].starts_with("narrow.st:12:9: error[E1019]: unknown function `DATE_TO_LDT`"),
         "{lines:?}"
     );
 }

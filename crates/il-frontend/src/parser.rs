@@ -1025,6 +1025,20 @@ impl<'s> Ctx<'s> {
     /// where `N` is an integer constant declared before, is `N` repetitions of 7 (CODESYS and
     /// TwinCAT name the count so); any other expression is one element (see [`Ctx::init_expr`]).
     pub fn array_element(&mut self, e: BoundExpr, l: usize, r: usize) -> ArrayInitElement {
+        if let BoundExpr::Call(callee, args, _) = &e {
+            if let ([BoundExpr::Name(of)], true) =
+                (args.as_slice(), callee.is("ADR") || callee.is("REF"))
+            {
+                // `[ADR(a), ADR(b)]` (CODESYS, TwinCAT): an element that starts as the address of
+                // a variable (`sema::address_init` checks it)
+                let of = crate::ast::VarRef {
+                    base: of.clone(),
+                    accessors: Vec::new().into(),
+                    span: of.span,
+                };
+                return self.address_array_element(of, l, r);
+            }
+        }
         let count = match &e {
             BoundExpr::Call(name, args, _) if args.len() == 1 => {
                 match self.consts.get(&name.name.to_ascii_uppercase()) {
@@ -1048,6 +1062,42 @@ impl<'s> Ctx<'s> {
             repeat,
             value: self.init_expr(value, l, r),
         }
+    }
+
+    /// `ADR(of)` / `REF(of)` written at `l..r` as an element of an array's initial value: the
+    /// address of `of` (`sema::address_init` checks it).
+    pub fn address_array_element(&mut self, of: VarRef, l: usize, r: usize) -> ArrayInitElement {
+        ArrayInitElement {
+            repeat: None,
+            value: Initializer::Value(Operand::Ref(Box::new(crate::ast::RefOperand {
+                of: Some(of),
+                span: self.span(l, r),
+                call_scoped: false,
+            }))),
+        }
+    }
+
+    /// `F(path)` written at `l..r` (`F` at `l..n`) as an element of an array's initial value:
+    /// `ADR(path)` / `REF(path)` an address ([`Ctx::address_array_element`]); another function
+    /// is no initial value (E0022).
+    pub fn address_call_element(
+        &mut self,
+        l: usize,
+        n: usize,
+        of: VarRef,
+        r: usize,
+    ) -> ArrayInitElement {
+        let callee = self.ident(l, n);
+        if !(callee.is("ADR") || callee.is("REF")) {
+            self.hint(
+                code::E0022,
+                format!("`{}(...)` is computed at run time", callee.name),
+                l,
+                r,
+                "an initial value is a constant, or `ADR(x)` / `REF(x)` of a variable of the POU; set this one in the body",
+            );
+        }
+        self.address_array_element(of, l, r)
     }
 
     /// `N(value)` in an array's initial value, `N` (at `l..r`) an integer constant declared

@@ -127,13 +127,17 @@ fn every_conversion_between_elementary_types_is_callable() {
     let (_, d) = analyze_src(&src);
     assert!(d.is_empty(), "{d}");
     // Some conversions do not exist.
-    assert!(stdlib::conversion("DATE_TO_TIME").is_none());
+    assert!(stdlib::conversion("DATE_TO_CHAR").is_none());
     assert!(stdlib::conversion("DATE_TO_UDINT").is_some());
-    // CODESYS's TIME_TO_TOD, TOD_TO_TIME and DATE_TO_DT exist (round 26), TOD_TO_DATE does not
+    // CODESYS's TIME_TO_TOD, TOD_TO_TIME and DATE_TO_DT exist (round 26), and since round 27
+    // every date and time type converts to every other (CODESYS's tables 16 and 17: TOD_TO_DATE,
+    // TOD_TO_DT, DATE_TO_TIME ...)
     assert!(stdlib::conversion("TIME_TO_TOD").is_some());
     assert!(stdlib::conversion("TOD_TO_TIME").is_some());
     assert!(stdlib::conversion("DATE_TO_DT").is_some());
-    assert!(stdlib::conversion("TOD_TO_DATE").is_none());
+    assert!(stdlib::conversion("TOD_TO_DATE").is_some());
+    assert!(stdlib::conversion("TOD_TO_DT").is_some());
+    assert!(stdlib::conversion("DATE_TO_TIME").is_some());
     assert!(stdlib::conversion("FOO_TO_INT").is_none());
     assert!(stdlib::conversion("INT_TO_STRING").is_some());
     assert!(stdlib::conversion("TRUNC").is_some());

@@ -64,7 +64,12 @@ impl Gen<'_> {
                 // with the instance's name and the fields to the reference
                 let mut own = mangle::var(&a.of_var);
                 for f in &a.within {
-                    let _ = write!(own, ".{}", mangle::var(f));
+                    if f.starts_with('[') {
+                        // an array's element, its zero-based subscripts (`[1]`)
+                        own.push_str(f);
+                    } else {
+                        let _ = write!(own, ".{}", mangle::var(f));
+                    }
                 }
                 // of a global variable: its own C name (`ADR(GVL.lamp)`)
                 let mut target = match a.global {

@@ -152,14 +152,15 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     }
     if time_like(f) {
         if time_like(t) {
-            // DT and LDT to a date or a time of day of either length, a duration to a time of
-            // day; the rest keeps its nanoseconds (TIME <-> LTIME, DATE <-> LDATE, TOD <-> LTOD,
-            // DT <-> LDT, DATE to DT, TOD to TIME)
-            return match (f.date_kind(), t.date_kind()) {
-                (Some(E::Dt), Some(E::Date)) => cfmt!("ladderc_dt_to_date({x})"),
-                (Some(E::Dt), Some(E::Tod)) => cfmt!("ladderc_dt_to_tod({x})"),
-                // TIME_TO_TOD (CODESYS): the time of day of the duration
-                (None, Some(E::Tod)) => cfmt!("ladderc_dt_to_tod({x})"),
+            // the same point of the time line from 1970-01-01-00:00 (`stdlib::conversion_allowed`):
+            // to a date its day, to a time of day its time of day (a DATE's is midnight, a TOD's
+            // and a duration's day 1970-01-01); the rest keeps its nanoseconds (TIME <-> LTIME,
+            // DATE, TOD or TIME to DT, DT to TIME ...)
+            return match t.date_kind() {
+                Some(E::Date) if f.date_kind() != Some(E::Date) => {
+                    cfmt!("ladderc_dt_to_date({x})")
+                }
+                Some(E::Tod) if f.date_kind() != Some(E::Tod) => cfmt!("ladderc_dt_to_tod({x})"),
                 _ => cfmt!("(({ct})({x}))"),
             };
         }

@@ -13,9 +13,10 @@
 //! variables, subscripts are in their bounds, and the variable's type is the reference's target
 //! type, an array of it, or (W1425) another type holding no reference (E0305, E1006 otherwise). A
 //! global variable's address initial value (TwinCAT's `fb : FB_M := (pLamp := ADR(GVL.lamp))` in a
-//! GVL) is set once every global is declared (`global_address_initial_values`). In a structure's
-//! field declaration, or inside an array's initial value, no address is taken (E0305): never
-//! dropped silently.
+//! GVL) is set once every global is declared (`global_address_initial_values`). The elements of
+//! an array's initial value (`[ADR(a), ADR(b)]`, `[(p := ADR(a))]`) each start so, their place a
+//! step `[i]` of [`AddressInit::within`]. In a structure's field declaration no address is taken
+//! (E0305): never dropped silently.
 
 use super::model::*;
 use super::Analyzer;
@@ -31,6 +32,10 @@ struct AddressOf {
     global: Option<GlobalRef>,
     reinterpreted: Option<(String, String)>,
 }
+
+/// An address found in an initial value: the steps to the reference, the row-major positions
+/// of its array steps, the address.
+type Found = (Vec<String>, Vec<usize>, ConstValue);
 
 /// Where the base variable of an `ADR(path)` initial value is looked up.
 #[derive(Clone, Copy)]
@@ -54,12 +59,42 @@ fn holds_address(init: &ast::Initializer) -> bool {
 }
 
 /// Puts `value` at the fields `path` inside the initial value `slot` (a structure's or an
-/// instance's field values, created where missing).
-fn insert_at(slot: &mut Option<ConstValue>, path: &[String], value: ConstValue) {
+/// instance's field values, created where missing); a step `[i]...` of `path` (an element of an
+/// array, see [`element_step`]) takes the next row-major position of `positions`.
+fn insert_at(
+    slot: &mut Option<ConstValue>,
+    path: &[String],
+    positions: &[usize],
+    value: ConstValue,
+) {
     let Some((first, rest)) = path.split_first() else {
         *slot = Some(value);
         return;
     };
+    if first.starts_with('[') {
+        let Some((&at, later)) = positions.split_first() else {
+            return;
+        };
+        if !matches!(slot, Some(ConstValue::Array(_))) {
+            *slot = Some(ConstValue::Array(Vec::new()));
+        }
+        let Some(ConstValue::Array(values)) = slot else {
+            return;
+        };
+        if values.len() <= at {
+            // (an empty value is the element type's default: `emit::init`)
+            values.resize(at + 1, ConstValue::Struct(Vec::new()));
+        }
+        let mut inner = Some(std::mem::replace(
+            &mut values[at],
+            ConstValue::Struct(Vec::new()),
+        ));
+        insert_at(&mut inner, rest, later, value);
+        if let Some(v) = inner {
+            values[at] = v;
+        }
+        return;
+    }
     if !matches!(slot, Some(ConstValue::Struct(_))) {
         *slot = Some(ConstValue::Struct(Vec::new()));
     }
@@ -80,10 +115,23 @@ fn insert_at(slot: &mut Option<ConstValue>, path: &[String], value: ConstValue) 
         &mut values[i].1,
         ConstValue::Struct(Vec::new()),
     ));
-    insert_at(&mut inner, rest, value);
+    insert_at(&mut inner, rest, positions, value);
     if let Some(v) = inner {
         values[i].1 = v;
     }
+}
+
+/// The step of an [`AddressInit::within`] path to the element at row-major position `at` of an
+/// array of dimensions `dims`: its zero-based subscripts, `[1][0]` (as the C writes them).
+fn element_step(dims: &[Dim], at: usize) -> String {
+    let mut rest = at as u128;
+    let mut subs = vec![0u128; dims.len()];
+    for (d, dim) in dims.iter().enumerate().rev() {
+        let len = dim.len().max(1);
+        subs[d] = rest % len;
+        rest /= len;
+    }
+    subs.iter().map(|s| format!("[{s}]")).collect()
 }
 
 impl Analyzer<'_> {
@@ -109,8 +157,8 @@ impl Analyzer<'_> {
             };
             let var = out[i].clone();
             let found = self.addresses_in(init, &var, scope);
-            for (within, address) in found {
-                insert_at(&mut out[i].init, &within, address);
+            for (within, positions, address) in found {
+                insert_at(&mut out[i].init, &within, &positions, address);
             }
         }
     }
@@ -145,8 +193,8 @@ impl Analyzer<'_> {
             let var = self.model.global(r).clone();
             let found = self.addresses_in(init, &var, Scope::Globals);
             let slot = &mut self.global_mut(r).init;
-            for (within, address) in found {
-                insert_at(slot, &within, address);
+            for (within, positions, address) in found {
+                insert_at(slot, &within, &positions, address);
             }
         }
     }
@@ -215,10 +263,18 @@ impl Analyzer<'_> {
         init: &ast::Initializer,
         var: &Variable,
         scope: Scope<'_>,
-    ) -> Vec<(Vec<String>, ConstValue)> {
+    ) -> Vec<Found> {
         let mut found = Vec::new();
         let mut within = Vec::new();
-        self.collect_addresses(init, &var.ty, var, scope, &mut within, &mut found);
+        let mut positions = Vec::new();
+        self.collect_addresses(
+            init,
+            &var.ty,
+            var,
+            scope,
+            (&mut within, &mut positions),
+            &mut found,
+        );
         found
     }
 
@@ -228,15 +284,22 @@ impl Analyzer<'_> {
         ty: &Type,
         var: &Variable,
         scope: Scope<'_>,
-        within: &mut Vec<String>,
-        found: &mut Vec<(Vec<String>, ConstValue)>,
+        (within, positions): (&mut Vec<String>, &mut Vec<usize>),
+        found: &mut Vec<Found>,
     ) {
         match init {
             ast::Initializer::Value(Operand::Ref(r)) => {
                 let Some(path) = &r.of else { return };
                 let Type::Ref(target) = ty else {
                     // a variable's own type is checked with its initial value (`decls`)
-                    if let Some(field) = within.last() {
+                    if !within.is_empty() {
+                        let mut field = var.name.clone();
+                        for f in within.iter() {
+                            if !f.starts_with('[') {
+                                field.push('.');
+                            }
+                            field.push_str(f);
+                        }
                         let t = self.type_name(ty);
                         self.error(
                             code::E1006,
@@ -252,7 +315,9 @@ impl Analyzer<'_> {
                 };
                 let mut name = var.name.clone();
                 for f in within.iter() {
-                    name.push('.');
+                    if !f.starts_with('[') {
+                        name.push('.');
+                    }
                     name.push_str(f);
                 }
                 let reference = Variable {
@@ -271,7 +336,7 @@ impl Analyzer<'_> {
                             global: a.global,
                             steps: a.steps,
                         });
-                        found.push((within.clone(), address));
+                        found.push((within.clone(), positions.clone(), address));
                     }
                     Err((code, message)) => {
                         self.error(code, r.span, message)
@@ -288,23 +353,64 @@ impl Analyzer<'_> {
                         continue;
                     };
                     within.push(field);
-                    self.collect_addresses(value, &field_ty, var, scope, within, found);
+                    self.collect_addresses(
+                        value,
+                        &field_ty,
+                        var,
+                        scope,
+                        (within, positions),
+                        found,
+                    );
                     within.pop();
                 }
             }
             ast::Initializer::Array(elements, _) => {
-                // one error for the array, at its first address
-                for e in elements {
-                    if self.refuse_addresses_in(&e.value, var) {
-                        break;
+                // (an array's initial value given to what is no array: E1025 from `decls`)
+                let Type::Array { dims, element } = ty else {
+                    return;
+                };
+                if matches!(scope, Scope::Struct) {
+                    // one error for the array, at its first address
+                    for e in elements {
+                        if self.refuse_addresses_in(&e.value, var) {
+                            break;
+                        }
                     }
+                    return;
+                }
+                // `[ADR(a), ADR(b)]` (CODESYS, TwinCAT): each element's address in its place
+                // (too many values: E1025 from `decls`)
+                let total = dims.iter().fold(1u128, |n, d| n.saturating_mul(d.len()));
+                let mut at = 0usize;
+                for e in elements {
+                    let repeat = e.repeat.unwrap_or(1) as usize;
+                    if holds_address(&e.value) {
+                        for k in at..at.saturating_add(repeat) {
+                            if k as u128 >= total {
+                                break;
+                            }
+                            within.push(element_step(dims, k));
+                            positions.push(k);
+                            self.collect_addresses(
+                                &e.value,
+                                element,
+                                var,
+                                scope,
+                                (within, positions),
+                                found,
+                            );
+                            positions.pop();
+                            within.pop();
+                        }
+                    }
+                    at = at.saturating_add(repeat);
                 }
             }
         }
     }
 
-    /// E0305 at the first `ADR(...)` of `init`, an element of an array's initial value; whether
-    /// there is one.
+    /// E0305 at the first `ADR(...)` of `init`, an element of an array's initial value in a
+    /// structure type's field declaration; whether there is one.
     fn refuse_addresses_in(&mut self, init: &ast::Initializer, var: &Variable) -> bool {
         match init {
             ast::Initializer::Value(Operand::Ref(r)) if r.of.is_some() => {
@@ -316,12 +422,12 @@ impl Analyzer<'_> {
                     code::E0305,
                     r.span,
                     format!(
-                        "`{}` cannot start as `ADR({text})`: an element of an array's initial value does not start as an address",
+                        "`{}` cannot start as `ADR({text})`: a structure's field does not start as an address",
                         var.name
                     ),
                 )
                 .label("initial value")
-                .hint("set the element in the body (`a[1].p := ADR(x);`), or give a pointer outside the array the address");
+                .hint("give the address in the initial value of a variable of the structure type (`s : ST := (ps := [ADR(x)]);`), or set it in the body");
                 true
             }
             ast::Initializer::Value(_) => false,

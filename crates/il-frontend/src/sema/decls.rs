@@ -1462,7 +1462,22 @@ impl Analyzer<'_> {
                 let total: u128 = dims.iter().fold(1u128, |n, d| n.saturating_mul(d.len()));
                 let mut out = Vec::new();
                 for e in elems {
-                    let v = self.const_init(&e.value, element, consts)?;
+                    let null = matches!(&e.value,
+                        Initializer::Value(Operand::Var(v)) if v.base.is("NULL") && v.accessors.is_empty());
+                    let v = match (null && matches!(**element, Type::Ref(_)))
+                        .then(|| ConstValue::Struct(Vec::new()))
+                        .or_else(|| self.const_init(&e.value, element, consts))
+                    {
+                        // (`[ADR(a), NULL]`: a reference element that starts as NULL, empty: the
+                        // type's default)
+                        Some(v) => v,
+                        // `[ADR(a), ADR(b)]`: set once every variable is declared, in the
+                        // element's place (`address_init`); an empty value is the type's default
+                        None if matches!(&e.value, Initializer::Value(Operand::Ref(r)) if r.of.is_some()) => {
+                            ConstValue::Struct(Vec::new())
+                        }
+                        None => return None,
+                    };
                     for _ in 0..e.repeat.unwrap_or(1) {
                         if out.len() as u128 >= total {
                             self.error(

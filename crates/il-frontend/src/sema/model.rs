@@ -748,7 +748,8 @@ pub struct AddressInit {
     /// The reference variable's own name (its C lvalue ends with it); of a field or input of an
     /// instance or structure (`fbM : FB_M := (pLamp := ADR(lamp))`), the instance's name.
     pub of_var: String,
-    /// The fields from `of_var` to the reference (`["pLamp"]`); empty: `of_var` itself.
+    /// The fields from `of_var` to the reference (`["pLamp"]`), an array's element as its
+    /// zero-based subscripts (`["[1]", "pLamp"]`, `["[0][2]"]`); empty: `of_var` itself.
     pub within: Vec<String>,
     /// The variable of the same POU, or the global variable, the address is taken of.
     pub base: String,

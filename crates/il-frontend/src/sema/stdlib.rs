@@ -604,13 +604,14 @@ fn conv_type(name: &str) -> Option<Type> {
 }
 
 /// Whether `X_TO_Y` exists: numbers, bit strings and BOOL convert among themselves; TIME/LTIME convert
-/// with each other and with integers, reals, bit strings and BOOL (milliseconds); DT converts to
-/// DATE and TOD; DT, DATE and TOD convert with numbers and bit strings (CODESYS, TwinCAT, matiec,
-/// OSCAT: DT and DATE as seconds since 1970-01-01, TOD as milliseconds since midnight; edition 3's
-/// LDT, LDATE and LTOD as nanoseconds); a date type converts to its long or short form (`DT_TO_LDT`,
-/// `LTOD_TO_TOD`), DT and LDT to the date and the time of day of either length, DATE to DT (the date
-/// at midnight) and TOD to TIME and back (CODESYS's `DATE_TO_DT`, `TOD_TO_TIME`, `TIME_TO_TOD`);
-/// everything elementary converts to and from STRING/WSTRING.
+/// with integers, reals, bit strings and BOOL (milliseconds); DT, DATE and TOD convert with numbers
+/// and bit strings (CODESYS, TwinCAT, matiec, OSCAT: DT and DATE as seconds since 1970-01-01, TOD
+/// as milliseconds since midnight; edition 3's LDT, LDATE and LTOD as nanoseconds); every date and
+/// time type (TIME, LTIME, DATE, LDATE, TOD, LTOD, DT, LDT) converts to every other, as the same
+/// point of the time line from 1970-01-01-00:00 (CODESYS's and TwinCAT's `TOD_TO_DT`,
+/// `TIME_TO_DATE`, `DT_TO_TOD` ...; a DATE at its midnight, a TOD or a duration counted from
+/// midnight; to DATE the day, to TOD the time of day); everything elementary converts to and from
+/// STRING/WSTRING.
 pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
     let (f, t) = (from.elementary(), to.elementary());
     match (f, t) {
@@ -620,19 +621,18 @@ pub fn conversion_allowed(from: &Type, to: &Type) -> bool {
         (Some(f), Some(t)) => {
             let plain = |e: E| e.is_numeric() || e.is_bit();
             // durations and bit strings too (TIME_TO_DWORD, DWORD_TO_TIME: matiec, CODESYS, OSCAT)
+            let time_like = |e: E| e.is_duration() || e.is_date();
             (plain(f) && plain(t))
-                || (f.is_duration() && (t.is_duration() || plain(t)))
+                || (f.is_duration() && plain(t))
                 || (t.is_duration() && plain(f))
-                || (f.is_date()
-                    && t.is_date()
-                    && (f.date_kind() == t.date_kind() || f.date_kind() == Some(E::Dt)))
-                // CODESYS's DATE_TO_DT (its table 17: the date at midnight), TOD_TO_TIME and
-                // TIME_TO_TOD (tables 16 and 17: both count milliseconds, a duration to a time of
-                // day keeps the time of day); the edition-2 types only, as CODESYS lists them
-                || matches!(
-                    (f, t),
-                    (E::Date, E::Dt) | (E::Tod, E::Time) | (E::Time, E::Tod)
-                )
+                // every date and time type to every other: edition 3's Table 22 (LDT_TO_DATE,
+                // DT_TO_TOD, LTIME_TO_TIME ...), CODESYS's and TwinCAT's tables 16 and 17
+                // (TIME/LTIME_TO_DATE/DT/TOD/LDATE/LDT/LTOD, DATE/DT/TOD_TO_<type>: DATE_TO_DT,
+                // TOD_TO_DT, TOD_TO_DATE ...); the value is the same point of the time line from
+                // 1970-01-01-00:00 (a TOD and a duration counted from its midnight, a DATE at its
+                // midnight): to DATE the day, to TOD the time of day (`TOD_TO_DT(TOD#10:00)` is
+                // DT#1970-01-01-10:00:00, `DT_TO_TIME` the time since 1970)
+                || (time_like(f) && time_like(t))
                 || (f.is_date() && plain(t))
                 || (t.is_date() && plain(f))
                 || (f == t)

@@ -290,6 +290,15 @@ impl RefTypes {
             if let Some(t) = toks.get(j) {
                 self.addresses.insert(base + t.range.start, target);
             }
+        } else if kind != Some(RefKind::Reference)
+            && !ref_eq
+            && !self.in_method
+            && address_array(value, value_span)
+        {
+            // `p : ARRAY[0..1] OF POINTER TO INT := [ADR(a), ADR(b)];` (CODESYS, TwinCAT): left
+            // for the declaration, each element an address (`sema::address_init`; a method's
+            // variables start at each call, `method_inits`: E0305 there)
+            return;
         } else if self.one_method_var
             && (super::method_inits::is_run_time_value(&toks[k + 1..end])
                 || value.eq_ignore_ascii_case("THIS"))
@@ -509,6 +518,39 @@ fn address_initial_value(value: &str, span: Span) -> Option<VarRef> {
         accessors: accessors.into(),
         span,
     })
+}
+
+/// Whether `value` is an array's initial value `[e, ...]` whose every element is `ADR(path)`,
+/// `REF(path)` (at least one) or the null address.
+fn address_array(value: &str, span: Span) -> bool {
+    let Some(inner) = value.strip_prefix('[').and_then(|v| v.strip_suffix(']')) else {
+        return false;
+    };
+    // the top-level elements (commas inside `[...]` subscripts or `(...)` belong to them)
+    let mut depth = 0i32;
+    let mut elements = Vec::new();
+    let mut from = 0;
+    for (k, c) in inner.char_indices() {
+        match c {
+            '(' | '[' => depth += 1,
+            ')' | ']' => depth -= 1,
+            ',' if depth == 0 => {
+                elements.push(inner[from..k].trim());
+                from = k + 1;
+            }
+            _ => {}
+        }
+    }
+    elements.push(inner[from..].trim());
+    let mut any = false;
+    for e in elements {
+        if address_initial_value(e, span).is_some() {
+            any = true;
+        } else if !e.eq_ignore_ascii_case("NULL") && !is_zero_literal(e) {
+            return false;
+        }
+    }
+    any
 }
 
 /// `0`, `16#0`, `2#0000` ...: the null address CODESYS and TwinCAT write for a pointer or

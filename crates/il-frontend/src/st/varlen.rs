@@ -290,6 +290,13 @@ fn params_of(env: &Env, callee: &Place) -> Option<(Vec<Param>, Callee)> {
             .filter(|i| i.kind == PouKind::FunctionBlock),
         _ => None,
     };
+    let block_at = |p: &Place| match env.place_type(p).map(|t| env.resolve(&t)) {
+        Some(TypeRef::Named(t)) => env
+            .decls
+            .pou(&t.name)
+            .filter(|i| i.kind == PouKind::FunctionBlock),
+        _ => None,
+    };
     let method = |block: &super::PouInterface, m: &Ident| {
         let sig = env
             .decls
@@ -325,8 +332,23 @@ fn params_of(env: &Env, callee: &Place) -> Option<(Vec<Param>, Callee)> {
             let block = env.decls.pou(&env.pou_name.name)?;
             method(block, n).map(|p| (p, Callee::OneCall))
         }
-        [Accessor::Field(m)] => method(block_of(n)?, m).map(|p| (p, Callee::OneCall)),
-        _ => None,
+        // a method of an instance (`inst.M(b)`), an instance selected by index or field
+        // (`fs[i](a := b)`, `s.fb(a := b)`), or a method of one (`fs[i].M(b)`): ordinary ST
+        // calls (IEC 61131-3 ed. 3, 6.5.3)
+        [.., last] => {
+            if let Some(b) = block_at(callee) {
+                return interface(b).map(|p| (p, Callee::Block));
+            }
+            let Accessor::Field(m) = last else {
+                return None;
+            };
+            let owner = Place {
+                base: callee.base.clone(),
+                accessors: callee.accessors[..callee.accessors.len() - 1].to_vec(),
+                span: callee.span,
+            };
+            method(block_at(&owner)?, m).map(|p| (p, Callee::OneCall))
+        }
     }
 }
 
