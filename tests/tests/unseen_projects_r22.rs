@@ -212,7 +212,7 @@ END_PROGRAM
         lines,
         [
             "bad.st:10:27: error[E0305]: `a.pLamp` cannot start as `ADR(nope)`: `nope` is no variable of this POU and no global variable (hint: start it as `ADR(x)` of a variable of the same POU or a global variable whose type it refers to, or set it in the body (`p := ADR(x);`))",
-            "bad.st:11:23: error[E1006]: cannot store an address into INT (hint: `k` is no POINTER TO, REF_TO or REFERENCE TO)",
+            "bad.st:11:23: error[E1006]: cannot store an address into INT (hint: `b.k` is no POINTER TO, REF_TO or REFERENCE TO)",
         ]
     );
     let (code, lines) = check_text("call.st", &bad.replace("ADR(nope)", "FOO(lamp)"));

@@ -798,8 +798,10 @@ pub(super) fn read_var_blocks(
     }
 }
 
-/// The text with each `;` right after an `END_VAR` blanked, one W0017 at each; `None` when it has
-/// none.
+/// The text with each `;` right after an `END_VAR` blanked, one W0017 at each that is no statement
+/// (declarations, another object or the end of the text follow: `END_VAR; VAR ...`); `None` when
+/// it has none. A `;` that a body follows is the body's empty statement (IEC 61131-3 edition 2's
+/// `statement ::= NIL | ...`), blanked without a word: it does nothing either way.
 fn end_var_semicolons(
     file: FileId,
     src: &str,
@@ -809,6 +811,35 @@ fn end_var_semicolons(
     let mut text: Option<String> = None;
     for (k, t) in toks.iter().enumerate().skip(1) {
         if t.tok != Tok::Semi || !is_word(src, &toks[k - 1], "END_VAR") {
+            continue;
+        }
+        // a body follows unless the text ends or declarations or another object come next
+        let body_follows = toks.get(k + 1).is_some_and(|n| {
+            let w = word(src, n).to_ascii_uppercase();
+            !(matches!(n.tok, Tok::Ident | Tok::Kw(_))
+                && (is_var_keyword(&w)
+                    || matches!(
+                        w.as_str(),
+                        "TYPE"
+                            | "PROGRAM"
+                            | "FUNCTION"
+                            | "FUNCTION_BLOCK"
+                            | "CLASS"
+                            | "INTERFACE"
+                            | "NAMESPACE"
+                            | "CONFIGURATION"
+                            | "RESOURCE"
+                            | "METHOD"
+                            | "PROPERTY"
+                            | "ACTION"
+                            | "ACTIONS"
+                            | "END_CONFIGURATION"
+                            | "END_RESOURCE"
+                            | "END_NAMESPACE"
+                    )))
+        });
+        if body_follows {
+            blank(text.get_or_insert_with(|| src.to_string()), t.range.clone());
             continue;
         }
         diags.push(
