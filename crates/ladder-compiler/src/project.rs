@@ -129,6 +129,12 @@ pub struct OtherFiles {
     /// The integer constants of the constant global lists (`N`, and `GVL.N` of a named list),
     /// upper case: array bounds of the other files may name them.
     pub constants: HashMap<String, i128>,
+    /// The global variables of the text files given with the XML (`.st` global lists), by
+    /// upper-case name: a box input or output of an LD/FBD body types them as the body's own.
+    pub globals: HashMap<String, TypeRef>,
+    /// The members of the named global lists of those files (`Glob.st` holding only `VAR_GLOBAL`
+    /// is the list `Glob`), by upper-case list, then member name: `Glob.a` into a box.
+    pub global_lists: HashMap<String, HashMap<String, TypeRef>>,
 }
 
 thread_local! {
@@ -175,6 +181,7 @@ pub fn interfaces(file: diagnostics::FileId, xml: &str) -> OtherFiles {
         pous,
         types,
         constants: ctx.constants.clone(),
+        ..OtherFiles::default()
     }
 }
 
@@ -385,6 +392,20 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             }
         }
     }
+    // the global variables of the text files given with this one: this file's own come first
+    OTHER_FILES.with(|o| {
+        if let Some(other) = o.borrow().as_ref() {
+            for (k, t) in &other.globals {
+                index.globals.entry(k.clone()).or_insert_with(|| t.clone());
+            }
+            for (list, members) in &other.global_lists {
+                let known = index.global_lists.entry(list.clone()).or_default();
+                for (k, t) in members {
+                    known.entry(k.clone()).or_insert_with(|| t.clone());
+                }
+            }
+        }
+    });
     let additional;
     (index.missing_types, additional) = check_types(ctx, &index, &data_types, &headers, &configs);
     // Beremiz's and OpenPLC's additional blocks (`PID`, `INTEGRAL`, ...) the file uses and does not

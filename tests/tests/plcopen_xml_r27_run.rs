@@ -1,0 +1,163 @@
+//! Round 27 of unseen projects (issue #13), PLCopen XML: what CODESYS V3 exports need, run end to
+//! end through `ladderc run`:
+//! - a box output written as `<connectionPointOut><expression>state</expression>` (CODESYS V3.5 LD:
+//!   the output assigned to a variable; PLCopen TC6: `connectionPointOut` holds an optional
+//!   `expression`) writes that variable, as an `<outVariable>` would (before: dropped silently, exit
+//!   0); the same for an input written as `<connectionPointIn><expression>n</expression>` (TC6:
+//!   either wires or one expression), on a box pin or on an element's own input (before: the
+//!   input read as unwired);
+//! - a member of a global list given as a text file (`Glob.st`, `Glob.a`) into a box input of an
+//!   LD/FBD body (before: E1001 `Glob` at the box, the list known only to direct connections).
+
+mod common;
+use common::{column, run_stimulated_files, run_traced_files};
+
+/// A PLCopen XML project of one program `Prg` (instance `P`, 10 ms task) with `vars` (the
+/// `<localVars>` variables) and `body` (the children of its `<body>`), CODESYS V3.5 style.
+fn project(vars: &str, body: &str) -> String {
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0200">
+  <fileHeader companyName="" productName="CODESYS" productVersion="CODESYS V3.5 SP20" creationDateTime="2026-01-01T00:00:00" />
+  <contentHeader name="t.project"><coordinateInfo><fbd><scaling x="1" y="1" /></fbd><ld><scaling x="1" y="1" /></ld><sfc><scaling x="1" y="1" /></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes /><pous>
+    <pou name="Prg" pouType="program">
+      <interface><localVars>{vars}</localVars></interface>
+      <body>{body}</body>
+    </pou>
+  </pous></types>
+  <instances><configurations><configuration name="C"><resource name="R"><task name="T" interval="PT0.01S" priority="1"><pouInstance name="P" typeName="Prg" /></task></resource></configuration></configurations></instances>
+</project>
+"#
+    )
+}
+
+/// Writes `files` (name, text) to a temporary folder and runs them together with `stimulus`.
+fn run_files(files: &[(&str, &str)], cycles: u32, stimulus: &str, watch: &str) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let paths: Vec<std::path::PathBuf> = files
+        .iter()
+        .map(|(name, text)| {
+            let p = dir.path().join(name);
+            std::fs::write(&p, text).unwrap();
+            p
+        })
+        .collect();
+    run_stimulated_files(&paths, &["--cycle-ms", "10"], cycles, stimulus, watch).0
+}
+
+/// CODESYS V3.5 LD: a contact on `btn` enables a MOVE of 3 whose OUT is assigned to `state`
+/// through the output point's `<expression>`, and its ENO a second MOVE of a string into `txt`.
+/// Both are written once `btn` is TRUE (before: both outputs were dropped, `state` stayed 0).
+#[test]
+fn a_box_output_point_expression_writes_its_variable() {
+    let vars = r#"<variable name="btn"><type><BOOL /></type></variable>
+        <variable name="state"><type><SINT /></type></variable>
+        <variable name="txt"><type><string length="20" /></type></variable>"#;
+    let body = r#"<LD>
+        <leftPowerRail localId="0"><position x="0" y="0" /><connectionPointOut formalParameter="none" /></leftPowerRail>
+        <contact localId="5" negated="false" storage="none" edge="none"><position x="0" y="0" /><connectionPointIn><connection refLocalId="0" /></connectionPointIn><connectionPointOut /><variable>btn</variable></contact>
+        <inVariable localId="6"><position x="0" y="0" /><connectionPointOut /><expression>3</expression></inVariable>
+        <block localId="4" typeName="MOVE"><position x="0" y="0" />
+          <inputVariables>
+            <variable formalParameter="EN"><connectionPointIn><connection refLocalId="5" /></connectionPointIn></variable>
+            <variable formalParameter="IN"><connectionPointIn><connection refLocalId="6" /></connectionPointIn></variable>
+          </inputVariables><inOutVariables />
+          <outputVariables>
+            <variable formalParameter="ENO"><connectionPointOut /></variable>
+            <variable formalParameter="OUT"><connectionPointOut><expression>state</expression></connectionPointOut></variable>
+          </outputVariables>
+        </block>
+        <inVariable localId="7"><position x="0" y="0" /><connectionPointOut /><expression>'Stopped'</expression></inVariable>
+        <block localId="3" typeName="MOVE"><position x="0" y="0" />
+          <inputVariables>
+            <variable formalParameter="EN"><connectionPointIn><connection refLocalId="4" formalParameter="ENO" /></connectionPointIn></variable>
+            <variable formalParameter="IN"><connectionPointIn><connection refLocalId="7" /></connectionPointIn></variable>
+          </inputVariables><inOutVariables />
+          <outputVariables>
+            <variable formalParameter="ENO"><connectionPointOut /></variable>
+            <variable formalParameter="OUT"><connectionPointOut><expression>txt</expression></connectionPointOut></variable>
+          </outputVariables>
+        </block>
+      </LD>"#;
+    let trace = run_files(
+        &[("ld.xml", &project(vars, body))],
+        4,
+        "2,P.btn,1\n",
+        "P.state,P.txt",
+    );
+    assert_eq!(column(&trace, "P.state"), [0.0, 0.0, 3.0, 3.0], "{trace}");
+    let rows: Vec<&str> = trace.lines().collect();
+    assert!(rows[2].ends_with(",\"\""), "{trace}");
+    assert!(rows[3].ends_with(",\"Stopped\""), "{trace}");
+}
+
+/// FBD with every pin written as an expression: `n := n + 2` by an ADD box whose inputs and output
+/// are `<expression>`s, a GT of the expression `n * 10` against 35 into `big`, and an
+/// `<outVariable>` whose own input is the expression `n + 100` (before: the inputs were read as
+/// unwired, E-less: the ADD of nothing).
+#[test]
+fn input_point_expressions_are_read_into_their_pins() {
+    let vars = r#"<variable name="n"><type><INT /></type></variable>
+        <variable name="m"><type><INT /></type></variable>
+        <variable name="big"><type><BOOL /></type></variable>"#;
+    let body = r#"<FBD>
+        <block localId="1" typeName="ADD"><position x="0" y="0" />
+          <inputVariables>
+            <variable formalParameter="IN1"><connectionPointIn><expression>n</expression></connectionPointIn></variable>
+            <variable formalParameter="IN2"><connectionPointIn><expression>2</expression></connectionPointIn></variable>
+          </inputVariables><inOutVariables />
+          <outputVariables>
+            <variable formalParameter="OUT"><connectionPointOut><expression>n</expression></connectionPointOut></variable>
+          </outputVariables>
+        </block>
+        <block localId="2" typeName="GT"><position x="0" y="100" />
+          <inputVariables>
+            <variable formalParameter="IN1"><connectionPointIn><expression>n * 10</expression></connectionPointIn></variable>
+            <variable formalParameter="IN2"><connectionPointIn><expression>35</expression></connectionPointIn></variable>
+          </inputVariables><inOutVariables />
+          <outputVariables>
+            <variable formalParameter="OUT"><connectionPointOut><expression>big</expression></connectionPointOut></variable>
+          </outputVariables>
+        </block>
+        <outVariable localId="3"><position x="0" y="200" /><connectionPointIn><expression>n + 100</expression></connectionPointIn><expression>m</expression></outVariable>
+      </FBD>"#;
+    let trace = run_files(&[("fbd.xml", &project(vars, body))], 3, "", "P.n,P.m,P.big");
+    assert_eq!(column(&trace, "P.n"), [2.0, 4.0, 6.0], "{trace}");
+    assert_eq!(column(&trace, "P.m"), [102.0, 104.0, 106.0], "{trace}");
+    assert_eq!(column(&trace, "P.big"), [0.0, 1.0, 1.0], "{trace}");
+}
+
+/// A CODESYS global list exported as the text file `Glob.st` (only `VAR_GLOBAL`, `qualified_only`)
+/// and an FBD body that moves `Glob.a` through a MOVE box into `c`, and `Glob.a * 2.0` through an
+/// ADD's input into `d`: both run (before: E1001 `Glob` at the box).
+#[test]
+fn a_text_global_list_member_feeds_a_box_input() {
+    let gvl = "{attribute 'qualified_only'}\nVAR_GLOBAL\n  a : REAL := 2.5;\nEND_VAR\n";
+    let vars = r#"<variable name="c"><type><REAL /></type></variable>
+        <variable name="d"><type><REAL /></type></variable>"#;
+    let body = r#"<FBD>
+        <inVariable localId="1"><position x="0" y="0" /><connectionPointOut /><expression>Glob.a</expression></inVariable>
+        <block localId="2" typeName="MOVE"><position x="0" y="0" />
+          <inputVariables><variable formalParameter="IN"><connectionPointIn><connection refLocalId="1" /></connectionPointIn></variable></inputVariables>
+          <inOutVariables />
+          <outputVariables><variable formalParameter="OUT"><connectionPointOut /></variable></outputVariables>
+        </block>
+        <outVariable localId="3"><position x="0" y="0" /><connectionPointIn><connection refLocalId="2" formalParameter="OUT" /></connectionPointIn><expression>c</expression></outVariable>
+        <block localId="4" typeName="ADD"><position x="0" y="50" />
+          <inputVariables>
+            <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="1" /></connectionPointIn></variable>
+            <variable formalParameter="IN2"><connectionPointIn><expression>Glob.a</expression></connectionPointIn></variable>
+          </inputVariables><inOutVariables />
+          <outputVariables><variable formalParameter="OUT"><connectionPointOut><expression>d</expression></connectionPointOut></variable></outputVariables>
+        </block>
+      </FBD>"#;
+    let dir = tempfile::tempdir().unwrap();
+    let g = dir.path().join("Glob.st");
+    let x = dir.path().join("prg.xml");
+    std::fs::write(&g, gvl).unwrap();
+    std::fs::write(&x, project(vars, body)).unwrap();
+    let (trace, _) = run_traced_files(&[&g, &x], 1, "P.c,P.d");
+    assert_eq!(column(&trace, "P.c"), [2.5], "{trace}");
+    assert_eq!(column(&trace, "P.d"), [5.0], "{trace}");
+}
