@@ -8,6 +8,8 @@
 //!   input read as unwired);
 //! - a member of a global list given as a text file (`Glob.st`, `Glob.a`) into a box input of an
 //!   LD/FBD body (before: E1001 `Glob` at the box, the list known only to direct connections).
+//! - a CODESYS UNION in the project's vendor data (`.../plcopenxml/union`) is a type (before: E3009).
+//! - `REFERENCE TO Lib.T` in XML is E3009 naming the missing `Lib.T` (before: E3012 "not supported").
 
 mod common;
 use common::{column, run_stimulated_files, run_traced_files};
@@ -160,4 +162,49 @@ fn a_text_global_list_member_feeds_a_box_input() {
     let (trace, _) = run_traced_files(&[&g, &x], 1, "P.c,P.d");
     assert_eq!(column(&trace, "P.c"), [2.5], "{trace}");
     assert_eq!(column(&trace, "P.d"), [5.0], "{trace}");
+}
+
+/// A CODESYS V3 UNION exported in the project's vendor data (`.../plcopenxml/union`): a DWORD
+/// overlaid by two WORDs; the high word of 16#12345678 is 16#1234, as the same type in ST gives
+/// (before: E3009 `U_Bits` is not defined, and W3002 for the block).
+#[test]
+fn a_union_in_the_project_vendor_data_is_a_type() {
+    let vars = r#"<variable name="bits"><type><derived name="U_Bits" /></type></variable>
+        <variable name="hi"><type><WORD /></type></variable>"#;
+    let body = r#"<ST><xhtml xmlns="http://www.w3.org/1999/xhtml">bits.d := 16#12345678;
+hi := bits.w[1];</xhtml></ST>"#;
+    let union = r#"<addData>
+    <data name="http://www.3s-software.com/plcopenxml/union" handleUnknown="implementation">
+      <union name="U_Bits">
+        <variable name="d"><type><DWORD /></type></variable>
+        <variable name="w"><type><array><dimension lower="0" upper="1" /><baseType><WORD /></baseType></array></type></variable>
+      </union>
+    </data>
+  </addData>
+</project>"#;
+    let xml = project(vars, body).replace("</project>", union);
+    let dir = tempfile::tempdir().unwrap();
+    let x = dir.path().join("u.xml");
+    std::fs::write(&x, xml).unwrap();
+    let (trace, stderr) = run_traced_files(&[&x], 1, "P.hi");
+    assert_eq!(column(&trace, "P.hi"), [4660.0], "{trace}");
+    assert!(!stderr.contains("W3002"), "{stderr}");
+}
+
+/// `REFERENCE TO LibMotion.AXIS_GROUP_REF` (CODESYS writes a reference to a library's type so) names
+/// one type: the missing library type is the one error, by its name (before: E3012 "a reference or
+/// pointer names one type").
+#[test]
+fn a_reference_to_a_library_type_names_the_missing_type() {
+    let vars = r#"<variable name="grp"><type><derived name="REFERENCE TO LibMotion.AXIS_GROUP_REF" /></type></variable>
+        <variable name="n"><type><INT /></type></variable>"#;
+    let body = r#"<ST><xhtml xmlns="http://www.w3.org/1999/xhtml">n := 1;</xhtml></ST>"#;
+    let (code, lines) = common::check_text("r.xml", &project(vars, body));
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].contains("error[E3009]: type `LibMotion.AXIS_GROUP_REF` is not defined"),
+        "{lines:?}"
+    );
 }

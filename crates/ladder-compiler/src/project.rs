@@ -103,6 +103,17 @@ fn types_and_pous<'b, 'a>(
         )
         .filter_map(|e| decls::data_type(ctx, e))
         .collect();
+    // CODESYS V3's UNIONs: in the project's vendor data (and an application's)
+    let data_types: Vec<TypeDecl> = data_types
+        .into_iter()
+        .chain(
+            std::iter::once(root)
+                .chain(vendor_resources.iter().copied())
+                .flat_map(|r| application_data(r, "/plcopenxml/union", "union"))
+                .filter_map(|e| decls::union_type(ctx, e))
+                .collect::<Vec<_>>(),
+        )
+        .collect();
     // Interfaces first: bodies call each other in any order.
     let pou_els: Vec<&Element> = types_el
         .and_then(|t| t.child("pous"))
@@ -672,6 +683,8 @@ fn is_read_vendor_data(name: &str) -> bool {
         // EXTENDS / IMPLEMENTS of a POU, and the project's INTERFACEs (`xml_oop`)
         "/pouinheritance",
         "/plcopenxml/interface",
+        // a CODESYS UNION (`decls::union_type`)
+        "/plcopenxml/union",
     ]
     .iter()
     .any(|s| name.ends_with(s))
@@ -1139,8 +1152,17 @@ fn check_types(
     let additional = std::cell::RefCell::new(HashSet::new());
     let visit = |ty: &TypeRef, owner: &str, uses: &mut Vec<_>| {
         let mut t = ty;
-        while let TypeRef::Array { element, .. } = t {
-            t = element;
+        loop {
+            match t {
+                TypeRef::Array { element, .. } => t = element,
+                // `REFERENCE TO Lib.T`: the library's type is what is missing
+                TypeRef::Ref { target, .. }
+                    if matches!(&**target, TypeRef::Named(n) if n.name.contains('.')) =>
+                {
+                    t = target
+                }
+                _ => break,
+            }
         }
         if let TypeRef::Named(n) = t {
             if !catalogue::is_library_type(&n.name)
