@@ -5,11 +5,16 @@
 //!   `expression`) writes that variable, as an `<outVariable>` would (before: dropped silently, exit
 //!   0); the same for an input written as `<connectionPointIn><expression>n</expression>` (TC6:
 //!   either wires or one expression), on a box pin or on an element's own input (before: the
-//!   input read as unwired);
+//!   input read as unwired); an expression beside a wire, or on a power rail, is W1449 (not read);
 //! - a member of a global list given as a text file (`Glob.st`, `Glob.a`) into a box input of an
 //!   LD/FBD body (before: E1001 `Glob` at the box, the list known only to direct connections).
 //! - a CODESYS UNION in the project's vendor data (`.../plcopenxml/union`) is a type (before: E3009).
 //! - `REFERENCE TO Lib.T` in XML is E3009 naming the missing `Lib.T` (before: E3012 "not supported").
+//! - elements of another schema in a graphical body (`<rung>`) are one E3012 with their count, a
+//!   reused localId one E3014 with its number of uses (before: one error per element, per repeat).
+//! - a CODESYS V2.3 `.EXP` export gets no W0302 language note (before: one per file).
+//! - IL `CAL f(...)` of a user FUNCTION runs (before: E2005 from the C backend); `CALC f` of a
+//!   function is a front-end E1018 (before: E2005).
 
 mod common;
 use common::{column, run_stimulated_files, run_traced_files};
@@ -206,5 +211,111 @@ fn a_reference_to_a_library_type_names_the_missing_type() {
     assert!(
         errors[0].contains("error[E3009]: type `LibMotion.AXIS_GROUP_REF` is not defined"),
         "{lines:?}"
+    );
+}
+
+/// A file in another schema (`<rung>` elements in an LD body: PLCopen TC6 LD has none) is one E3012
+/// with the count, and a right rail whose localId every rung repeats is one E3014 with the number
+/// of uses (before: one error per rung, per repeat).
+#[test]
+fn foreign_elements_and_a_reused_local_id_are_one_error_each() {
+    let vars = r#"<variable name="a"><type><BOOL /></type></variable>
+        <variable name="q"><type><BOOL /></type></variable>"#;
+    let rungs: String = (0..5)
+        .map(|k| format!(r#"<rung id="{k}"><contact variable="a"/><coil variable="q"/></rung>"#))
+        .collect();
+    let rails: String = (0..4)
+        .map(|_| r#"<rightPowerRail localId="2147483646"><position x="0" y="0" /><connectionPointIn /></rightPowerRail>"#)
+        .collect();
+    let body = format!("<LD>{rungs}{rails}</LD>");
+    let (code, lines) = common::check_text("rungs.xml", &project(vars, &body));
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 2, "{lines:?}");
+    assert!(
+        errors[0].contains(
+            "error[E3012]: element <rung> is not supported in a graphical body (5 elements)"
+        ),
+        "{lines:?}"
+    );
+    assert!(
+        errors[1].contains("error[E3014]: localId 2147483646 is used 4 times"),
+        "{lines:?}"
+    );
+}
+
+/// A CODESYS V2.3 text export (`.EXP`, a documented input) runs without the W0302 note "read as
+/// Structured Text ... name the file .il, .st or .xml" (before: one note per `.EXP` file, 45 on one
+/// project).
+#[test]
+fn a_codesys_v23_export_gets_no_language_note() {
+    let dir = tempfile::tempdir().unwrap();
+    common::write_in(
+        dir.path(),
+        "PLC_PRG.EXP",
+        "(* @NESTEDCOMMENTS := 'Yes' *)\n(* @PATH := '' *)\n(* @OBJECTFLAGS := '0, 8' *)\n\
+         (* @SYMFILEFLAGS := '2048' *)\nPROGRAM PLC_PRG\nVAR\n\tn : INT;\nEND_VAR\n\
+         (* @END_DECLARATION := '0' *)\nn := n + 1;\nEND_PROGRAM\n",
+    );
+    let (code, trace, stderr) = common::in_dir(
+        dir.path(),
+        &[
+            "run",
+            "PLC_PRG.EXP",
+            "--cycles",
+            "2",
+            "--trace",
+            "-",
+            "--watch",
+            "PLC_PRG.n",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(column(&trace, "PLC_PRG.n"), [1.0, 2.0], "{trace}");
+    assert!(!stderr.contains("W0302"), "{stderr}");
+}
+
+/// IL `CAL Twice(v := n)` of a user FUNCTION runs as the function call it is (IEC 61131-3 draft
+/// Annex F; ladderc already ran `CAL SPLIT_TOD(...)`): its result is the current result, `r` = 6
+/// (before: E2005 "the C backend cannot resolve `Twice`"). A conditional `CALC` of a function is
+/// a front-end E1018 at the name, alone (before: E2005).
+#[test]
+fn cal_of_a_user_function_runs_and_calc_of_one_is_a_front_end_error() {
+    let il = "FUNCTION Twice : INT\nVAR_INPUT v : INT; END_VAR\nLD v\nMUL 2\nST Twice\nEND_FUNCTION\n\n\
+              PROGRAM main\nVAR n : INT := 3; r : INT; END_VAR\nCAL Twice(v := n)\nST r\nEND_PROGRAM\n";
+    let (trace, _) = common::run_text("cal.il", il, 1, "main.r");
+    assert_eq!(column(&trace, "main.r"), [6.0], "{trace}");
+    let calc = il.replace("CAL Twice", "LD TRUE\nCALC Twice");
+    let (code, lines) = common::check_text("calc.il", &calc);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("calc.il:11:6: error[E1018]: `Twice` is a function: a conditional CAL (CALC, CALCN) calls a function block instance"),
+        "{lines:?}"
+    );
+}
+
+/// An expression on a point that also has a wire (TC6: either, not both) is W1449 at the
+/// expression and the wire is what the pin reads; the run goes on.
+#[test]
+fn an_expression_beside_a_wire_is_a_warning() {
+    let vars = r#"<variable name="n"><type><INT /></type></variable>
+        <variable name="m"><type><INT /></type></variable>"#;
+    let body = r#"<FBD>
+        <inVariable localId="1"><position x="0" y="0" /><connectionPointOut /><expression>7</expression></inVariable>
+        <block localId="2" typeName="MOVE"><position x="0" y="0" />
+          <inputVariables><variable formalParameter="IN"><connectionPointIn><connection refLocalId="1" /><expression>n</expression></connectionPointIn></variable></inputVariables>
+          <inOutVariables />
+          <outputVariables><variable formalParameter="OUT"><connectionPointOut><expression>m</expression></connectionPointOut></variable></outputVariables>
+        </block>
+      </FBD>"#;
+    let dir = tempfile::tempdir().unwrap();
+    let x = dir.path().join("w.xml");
+    std::fs::write(&x, project(vars, body)).unwrap();
+    let (trace, stderr) = run_traced_files(&[&x], 1, "P.m");
+    assert_eq!(column(&trace, "P.m"), [7.0], "{trace}");
+    assert!(
+        stderr.contains("warning[W1449]: expression `n` on a connection point is not read: the pin has wires too"),
+        "{stderr}"
     );
 }

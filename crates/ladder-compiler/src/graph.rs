@@ -337,6 +337,26 @@ fn expression_of<'x>(ctx: &Ctx, point: &Element<'x>) -> Option<(Text<'x>, Span)>
     (!text.is_empty()).then_some((text, span))
 }
 
+/// W1449: the expression `x` of a connection point is not read, `why`.
+fn unread_expression(ctx: &mut Ctx, x: &(Text<'_>, Span), why: &str, pou: &str) {
+    ctx.report(
+        Diagnostic::warning(
+            code::W1449,
+            format!(
+                "expression `{}` on a connection point is not read: {why}",
+                x.0
+            ),
+        )
+        .at(x.1)
+        .with_hint("keep either the wires or the expression on the point (`ladderc explain W1449`)")
+        .with_xml(diagnostics::XmlContext {
+            pou: Some(pou.to_string()),
+            local_id: None,
+            network: None,
+        }),
+    );
+}
+
 /// A wire into a point whose source is not read yet: [`Pending::In`] sets its node.
 fn pending_wire<'x>(refs: &mut WireRefs<'x>, pin: Option<Text<'x>>, span: Span) -> Wire<'x> {
     refs.ids.push("");
@@ -460,6 +480,11 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     };
     // localId -> node index; the ids are borrowed from the XML text.
     let mut ids = LocalIds::new(body.children.len());
+    // Elements of no PLCopen graphical body (name, first one's tag and localId, count) and reused
+    // localIds (id, second use, first node, uses): one error each, not one per element (a file in
+    // another schema, a generator that numbers every rung's right rail alike).
+    let mut unsupported: Vec<(&str, (Span, Option<&str>), usize)> = Vec::new();
+    let mut reused: Vec<(&str, Span, usize, usize)> = Vec::new();
     for e in body.children {
         let span = ctx.tag(e);
         if matches!(
@@ -572,6 +597,8 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                             if wires.is_empty() {
                                 wires.push(pending_wire(&mut refs, None, x.1));
                                 pending.push(Pending::In(refs.ids.len() - 1, x));
+                            } else {
+                                unread_expression(ctx, &x, "the pin has wires too", pou);
                             }
                         }
                         inputs.push(InPin {
@@ -630,18 +657,11 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                 }))
             }
             other => {
-                ctx.report(
-                    Diagnostic::error(
-                        code::E3012,
-                        format!("element <{other}> is not supported in a graphical body"),
-                    )
-                    .at(span)
-                    .with_xml(diagnostics::XmlContext {
-                        pou: Some(pou.to_string()),
-                        local_id: local_id.map(str::to_string),
-                        network: None,
-                    }),
-                );
+                // one error per element name, reported below with the count
+                match unsupported.iter_mut().find(|u| u.0 == other) {
+                    Some(u) => u.2 += 1,
+                    None => unsupported.push((other, (span, local_id), 1)),
+                }
                 continue;
             }
         };
@@ -654,21 +674,11 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
             continue;
         };
         if let Some(prev) = ids.get(id) {
-            let prev_span: Span = nodes
-                .iter()
-                .map(|n: &Node<'x>| n.span)
-                .nth(prev)
-                .unwrap_or(span);
-            ctx.report(
-                Diagnostic::error(code::E3014, format!("localId {id} is used twice"))
-                    .at(span)
-                    .with_label(prev_span, "first used here")
-                    .with_xml(diagnostics::XmlContext {
-                        pou: Some(pou.to_string()),
-                        local_id: Some(id.to_string()),
-                        network: None,
-                    }),
-            );
+            // one error per reused id, reported below with the number of uses
+            match reused.iter_mut().find(|r| r.0 == id) {
+                Some(r) => r.3 += 1,
+                None => reused.push((id, span, prev, 2)),
+            }
             continue;
         }
         let [x, y] = e
@@ -679,11 +689,23 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
         let mut input = raw_wires(ctx, point, &mut refs, &ids);
         // a power rail's points carry no value of their own: an expression there means nothing
         let rail_node = matches!(kind, Kind::LeftRail | Kind::RightRail);
-        if !rail_node && !matches!(kind, Kind::Block(_)) {
+        if rail_node {
+            for x in e
+                .children
+                .iter()
+                .filter(|p| matches!(p.name(), "connectionPointIn" | "connectionPointOut"))
+                .filter_map(|p| expression_of(ctx, p))
+                .collect::<Vec<_>>()
+            {
+                unread_expression(ctx, &x, "a power rail's point carries no value", pou);
+            }
+        } else if !matches!(kind, Kind::Block(_)) {
             if let Some(x) = point.and_then(|p| expression_of(ctx, p)) {
                 if input.is_empty() {
                     input.push(pending_wire(&mut refs, None, x.1));
                     pending.push(Pending::In(refs.ids.len() - 1, x));
+                } else {
+                    unread_expression(ctx, &x, "the point has wires too", pou);
                 }
             }
             if let Some(x) = e
@@ -758,6 +780,43 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                 wired,
             });
         }
+    }
+    for (name, (span, local_id), n) in unsupported {
+        let count = if n > 1 {
+            format!(" ({n} elements)")
+        } else {
+            String::new()
+        };
+        ctx.report(
+            Diagnostic::error(
+                code::E3012,
+                format!("element <{name}> is not supported in a graphical body{count}"),
+            )
+            .at(span)
+            .with_xml(diagnostics::XmlContext {
+                pou: Some(pou.to_string()),
+                local_id: local_id.map(str::to_string),
+                network: None,
+            }),
+        );
+    }
+    for (id, span, prev, uses) in reused {
+        let prev_span = nodes.get(prev).map_or(span, |n| n.span);
+        let times = if uses == 2 {
+            "twice".to_string()
+        } else {
+            format!("{uses} times")
+        };
+        ctx.report(
+            Diagnostic::error(code::E3014, format!("localId {id} is used {times}"))
+                .at(span)
+                .with_label(prev_span, "first used here")
+                .with_xml(diagnostics::XmlContext {
+                    pou: Some(pou.to_string()),
+                    local_id: Some(id.to_string()),
+                    network: None,
+                }),
+        );
     }
     // Resolve wires in place (`from`: an index in `refs` until now); a dangling one is reported and
     // dropped, in document order: a node's input, then its pins.

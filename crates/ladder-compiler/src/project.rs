@@ -1156,9 +1156,7 @@ fn check_types(
             match t {
                 TypeRef::Array { element, .. } => t = element,
                 // `REFERENCE TO Lib.T`: the library's type is what is missing
-                TypeRef::Ref { target, .. }
-                    if matches!(&**target, TypeRef::Named(n) if n.name.contains('.')) =>
-                {
+                TypeRef::Ref { target, .. } if matches!(&**target, TypeRef::Named(n) if n.name.contains('.')) => {
                     t = target
                 }
                 _ => break,

@@ -514,8 +514,11 @@ impl Session {
                 }
                 None => (file_lang, None),
             };
-            // (not for an OpenPLC Editor v4 graphical POU: its E1073 below says what it is)
-            if detected && openplc_v4_json_body(src).is_none() {
+            // (not for an OpenPLC Editor v4 graphical POU: its E1073 below says what it is, nor
+            // for a CODESYS V2.3 export, `.EXP`: a documented input whose language is its own)
+            let v23_export =
+                v23_text.is_some() || p.extension().is_some_and(|x| x.eq_ignore_ascii_case("exp"));
+            if detected && !v23_export && openplc_v4_json_body(src).is_none() {
                 self.diags.push(
                     Diagnostic::new(
                         code::W0302,
