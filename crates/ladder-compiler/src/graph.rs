@@ -337,6 +337,9 @@ fn expression_of<'x>(ctx: &Ctx, point: &Element<'x>) -> Option<(Text<'x>, Span)>
     (!text.is_empty()).then_some((text, span))
 }
 
+/// An element name of no graphical body, its first element's tag and localId, and how many there are.
+type Unsupported<'x> = (&'x str, (Span, Option<&'x str>), usize);
+
 /// W1449: the expression `x` of a connection point is not read, `why`.
 fn unread_expression(ctx: &mut Ctx, x: &(Text<'_>, Span), why: &str, pou: &str) {
     ctx.report(
@@ -483,7 +486,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     // Elements of no PLCopen graphical body (name, first one's tag and localId, count) and reused
     // localIds (id, second use, first node, uses): one error each, not one per element (a file in
     // another schema, a generator that numbers every rung's right rail alike).
-    let mut unsupported: Vec<(&str, (Span, Option<&str>), usize)> = Vec::new();
+    let mut unsupported: Vec<Unsupported<'_>> = Vec::new();
     let mut reused: Vec<(&str, Span, usize, usize)> = Vec::new();
     for e in body.children {
         let span = ctx.tag(e);
