@@ -102,7 +102,9 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
                 let kind = is_reference(n)?;
                 let base = n.split_whitespace().nth(2).unwrap_or("");
                 let base = elementary(&base.to_ascii_uppercase()).unwrap_or(base);
-                if n.split_whitespace().count() != 3 || !values::is_ident(base) {
+                // a library-qualified target (CODESYS `REFERENCE TO SM3_Robotics.AXIS_GROUP_REF_SM3`)
+                // is one type too: kept whole, so that a missing one is reported by its name (E3009)
+                if n.split_whitespace().count() != 3 || !base.split('.').all(values::is_ident) {
                     let msg = format!("type `{n}` is not supported here: a reference or pointer names one type (`POINTER TO INT`, `REFERENCE TO Motor`)");
                     ctx.error(code::E3012, span, msg);
                     return None;
@@ -645,6 +647,32 @@ pub fn global_lists(ctx: &mut Ctx, list: &Element) -> Vec<VarBlock> {
         .into_iter()
         .map(|g| var_block(ctx, g, VarKind::Global))
         .collect()
+}
+
+/// A CODESYS V3 UNION, exported in vendor data as
+/// `<data name=".../plcopenxml/union"><union name="U"><variable .../>...</union>` (TC6 has no
+/// union type): the same declaration as `TYPE U : UNION ... END_UNION` in ST.
+pub fn union_type(ctx: &mut Ctx, u: &Element) -> Option<TypeDecl> {
+    let span = ctx.tag(u);
+    let Some(name) = u
+        .attr("name")
+        .map(str::trim)
+        .filter(|n| values::is_ident(n))
+    else {
+        ctx.error(code::E3013, span, "union without a valid `name`");
+        return None;
+    };
+    let name = Ident::new(name, ctx.attr_span(u, "name"));
+    let fields = u
+        .children_named("variable")
+        .filter_map(|v| variable(ctx, v))
+        .collect();
+    Some(TypeDecl {
+        name,
+        def: TypeDef::Struct { fields },
+        union: true,
+        span,
+    })
 }
 
 /// `<dataType name="...">` with its `<baseType>` and optional `<initialValue>`.

@@ -317,6 +317,60 @@ fn raw_wires<'x>(
         .unwrap_or_default()
 }
 
+/// An `<expression>` written on a connection point instead of a wire (PLCopen TC6: `connectionPointIn`
+/// holds either `<connection>`s or one `<expression>`, `connectionPointOut` may hold one `<expression>`;
+/// CODESYS V3 LD writes a box output assigned to a variable as
+/// `<connectionPointOut><expression>state</expression></connectionPointOut>`). [`read`] turns each
+/// into the element it stands for, right after the element that holds it.
+enum Pending<'x> {
+    /// An input point's expression: read into the point through the wire whose index in
+    /// [`WireRefs`] is given (resolved once the `<inVariable>` standing for it is a node).
+    In(usize, (Text<'x>, Span)),
+    /// An output point's expression (with the block pin's name): the value written to it.
+    Out(Option<Text<'x>>, (Text<'x>, Span)),
+}
+
+/// The text of a connection point's `<expression>` and its span, if it has a non-blank one.
+fn expression_of<'x>(ctx: &Ctx, point: &Element<'x>) -> Option<(Text<'x>, Span)> {
+    point.child("expression")?;
+    let (text, span) = text_of(ctx, point, "expression");
+    (!text.is_empty()).then_some((text, span))
+}
+
+/// An element name of no graphical body, its first element's tag and localId, and how many there are.
+type Unsupported<'x> = (&'x str, (Span, Option<&'x str>), usize);
+
+/// W1449: the expression `x` of a connection point is not read, `why`.
+fn unread_expression(ctx: &mut Ctx, x: &(Text<'_>, Span), why: &str, pou: &str) {
+    ctx.report(
+        Diagnostic::warning(
+            code::W1449,
+            format!(
+                "expression `{}` on a connection point is not read: {why}",
+                x.0
+            ),
+        )
+        .at(x.1)
+        .with_hint("keep either the wires or the expression on the point (`ladderc explain W1449`)")
+        .with_xml(diagnostics::XmlContext {
+            pou: Some(pou.to_string()),
+            local_id: None,
+            network: None,
+        }),
+    );
+}
+
+/// A wire into a point whose source is not read yet: [`Pending::In`] sets its node.
+fn pending_wire<'x>(refs: &mut WireRefs<'x>, pin: Option<Text<'x>>, span: Span) -> Wire<'x> {
+    refs.ids.push("");
+    refs.found.push(0);
+    Wire {
+        from: refs.ids.len() - 1,
+        pin,
+        span,
+    }
+}
+
 /// The `refLocalId` of every wire read by [`raw_wires`], by [`Wire::from`] until [`read`] resolves
 /// the wires.
 struct WireRefs<'x> {
@@ -429,6 +483,11 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     };
     // localId -> node index; the ids are borrowed from the XML text.
     let mut ids = LocalIds::new(body.children.len());
+    // Elements of no PLCopen graphical body (name, first one's tag and localId, count) and reused
+    // localIds (id, second use, first node, uses): one error each, not one per element (a file in
+    // another schema, a generator that numbers every rung's right rail alike).
+    let mut unsupported: Vec<Unsupported<'_>> = Vec::new();
+    let mut reused: Vec<(&str, Span, usize, usize)> = Vec::new();
     for e in body.children {
         let span = ctx.tag(e);
         if matches!(
@@ -451,6 +510,8 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
         };
         let [local_id, exec_order, a, b, c] =
             e.attrs(["localId", "executionOrderId", own[0], own[1], own[2]]);
+        // `<expression>`s written on connection points instead of wires (see [`Pending`])
+        let mut pending: Vec<Pending<'x>> = Vec::new();
         let kind = match e.name() {
             "leftPowerRail" => Kind::LeftRail,
             "rightPowerRail" => Kind::RightRail,
@@ -532,9 +593,17 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                         .flat_map(|l| l.children_named("variable"))
                     {
                         let point = v.child("connectionPointIn");
-                        let wires = raw_wires(ctx, point, &mut refs, &ids);
+                        let mut wires = raw_wires(ctx, point, &mut refs, &ids);
                         let [formal, negated, edge] =
                             v.attrs(["formalParameter", "negated", "edge"]);
+                        if let Some(x) = point.and_then(|p| expression_of(ctx, p)) {
+                            if wires.is_empty() {
+                                wires.push(pending_wire(&mut refs, None, x.1));
+                                pending.push(Pending::In(refs.ids.len() - 1, x));
+                            } else {
+                                unread_expression(ctx, &x, "the pin has wires too", pou);
+                            }
+                        }
                         inputs.push(InPin {
                             name: Cow::Borrowed(trim(formal.unwrap_or_default())),
                             negated: truthy(negated),
@@ -551,6 +620,15 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                     .flat_map(|l| l.children_named("variable"))
                 {
                     let [formal, negated] = v.attrs(["formalParameter", "negated"]);
+                    if let Some(x) = v
+                        .child("connectionPointOut")
+                        .and_then(|p| expression_of(ctx, p))
+                    {
+                        pending.push(Pending::Out(
+                            Some(Cow::Borrowed(trim(formal.unwrap_or_default()))),
+                            x,
+                        ));
+                    }
                     outputs.push(OutPin {
                         name: Cow::Borrowed(trim(formal.unwrap_or_default())),
                         negated: truthy(negated),
@@ -582,18 +660,11 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                 }))
             }
             other => {
-                ctx.report(
-                    Diagnostic::error(
-                        code::E3012,
-                        format!("element <{other}> is not supported in a graphical body"),
-                    )
-                    .at(span)
-                    .with_xml(diagnostics::XmlContext {
-                        pou: Some(pou.to_string()),
-                        local_id: local_id.map(str::to_string),
-                        network: None,
-                    }),
-                );
+                // one error per element name, reported below with the count
+                match unsupported.iter_mut().find(|u| u.0 == other) {
+                    Some(u) => u.2 += 1,
+                    None => unsupported.push((other, (span, local_id), 1)),
+                }
                 continue;
             }
         };
@@ -606,21 +677,11 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
             continue;
         };
         if let Some(prev) = ids.get(id) {
-            let prev_span: Span = nodes
-                .iter()
-                .map(|n: &Node<'x>| n.span)
-                .nth(prev)
-                .unwrap_or(span);
-            ctx.report(
-                Diagnostic::error(code::E3014, format!("localId {id} is used twice"))
-                    .at(span)
-                    .with_label(prev_span, "first used here")
-                    .with_xml(diagnostics::XmlContext {
-                        pou: Some(pou.to_string()),
-                        local_id: Some(id.to_string()),
-                        network: None,
-                    }),
-            );
+            // one error per reused id, reported below with the number of uses
+            match reused.iter_mut().find(|r| r.0 == id) {
+                Some(r) => r.3 += 1,
+                None => reused.push((id, span, prev, 2)),
+            }
             continue;
         }
         let [x, y] = e
@@ -628,20 +689,137 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
             .map_or([None, None], |p| p.attrs(["x", "y"]));
         let point = e.child("connectionPointIn");
         ids.insert(id, nodes.len());
-        let input = raw_wires(ctx, point, &mut refs, &ids);
+        let mut input = raw_wires(ctx, point, &mut refs, &ids);
+        // a power rail's points carry no value of their own: an expression there means nothing
+        let rail_node = matches!(kind, Kind::LeftRail | Kind::RightRail);
+        if rail_node {
+            for x in e
+                .children
+                .iter()
+                .filter(|p| matches!(p.name(), "connectionPointIn" | "connectionPointOut"))
+                .filter_map(|p| expression_of(ctx, p))
+                .collect::<Vec<_>>()
+            {
+                unread_expression(ctx, &x, "a power rail's point carries no value", pou);
+            }
+        } else if !matches!(kind, Kind::Block(_)) {
+            if let Some(x) = point.and_then(|p| expression_of(ctx, p)) {
+                if input.is_empty() {
+                    input.push(pending_wire(&mut refs, None, x.1));
+                    pending.push(Pending::In(refs.ids.len() - 1, x));
+                } else {
+                    unread_expression(ctx, &x, "the point has wires too", pou);
+                }
+            }
+            if let Some(x) = e
+                .child("connectionPointOut")
+                .and_then(|p| expression_of(ctx, p))
+            {
+                pending.push(Pending::Out(None, x));
+            }
+        }
         let wired = !input.is_empty();
+        let exec_order = exec_order.and_then(|v| trim(v).parse().ok());
+        let (x, y) = (coord(x), coord(y));
+        let me = nodes.len();
         nodes.push(Node {
             id: Cow::Borrowed(id),
             num: id.parse().unwrap_or(u64::MAX),
             kind,
             span,
-            exec_order: exec_order.and_then(|v| trim(v).parse().ok()),
-            x: coord(x),
-            y: coord(y),
+            exec_order,
+            x,
+            y,
             input,
             has_input: point.is_some(),
             wired,
         });
+        // each expression on a connection point becomes the element it stands for: an
+        // `<inVariable>` wired into the pin, an `<outVariable>` wired from it
+        for (k, p) in pending.into_iter().enumerate() {
+            let (kind, input) = match p {
+                Pending::In(wire, (expr, expr_span)) => {
+                    refs.found[wire] = u32::try_from(nodes.len() + 1).unwrap_or(0);
+                    let kind = Kind::InVar {
+                        expr,
+                        expr_span,
+                        negated: false,
+                    };
+                    (kind, Vec::new())
+                }
+                Pending::Out(pin, (expr, expr_span)) => {
+                    refs.ids.push(id);
+                    refs.found.push(u32::try_from(me + 1).unwrap_or(0));
+                    let wire = Wire {
+                        from: refs.ids.len() - 1,
+                        pin,
+                        span: expr_span,
+                    };
+                    let kind = Kind::OutVar {
+                        expr,
+                        expr_span,
+                        negated: false,
+                    };
+                    (kind, vec![wire])
+                }
+            };
+            let span = match &kind {
+                Kind::InVar { expr_span, .. } | Kind::OutVar { expr_span, .. } => *expr_span,
+                _ => span,
+            };
+            let wired = !input.is_empty();
+            nodes.push(Node {
+                // unique: a localId holds no `#`... and if one does, the generated names differ
+                // by the pin's number
+                id: Cow::Owned(format!("{id}#{k}")),
+                num: u64::MAX,
+                kind,
+                span,
+                exec_order,
+                x,
+                y,
+                input,
+                has_input: wired,
+                wired,
+            });
+        }
+    }
+    for (name, (span, local_id), n) in unsupported {
+        let count = if n > 1 {
+            format!(" ({n} elements)")
+        } else {
+            String::new()
+        };
+        ctx.report(
+            Diagnostic::error(
+                code::E3012,
+                format!("element <{name}> is not supported in a graphical body{count}"),
+            )
+            .at(span)
+            .with_xml(diagnostics::XmlContext {
+                pou: Some(pou.to_string()),
+                local_id: local_id.map(str::to_string),
+                network: None,
+            }),
+        );
+    }
+    for (id, span, prev, uses) in reused {
+        let prev_span = nodes.get(prev).map_or(span, |n| n.span);
+        let times = if uses == 2 {
+            "twice".to_string()
+        } else {
+            format!("{uses} times")
+        };
+        ctx.report(
+            Diagnostic::error(code::E3014, format!("localId {id} is used {times}"))
+                .at(span)
+                .with_label(prev_span, "first used here")
+                .with_xml(diagnostics::XmlContext {
+                    pou: Some(pou.to_string()),
+                    local_id: Some(id.to_string()),
+                    network: None,
+                }),
+        );
     }
     // Resolve wires in place (`from`: an index in `refs` until now); a dangling one is reported and
     // dropped, in document order: a node's input, then its pins.

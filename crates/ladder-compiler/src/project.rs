@@ -103,6 +103,17 @@ fn types_and_pous<'b, 'a>(
         )
         .filter_map(|e| decls::data_type(ctx, e))
         .collect();
+    // CODESYS V3's UNIONs: in the project's vendor data (and an application's)
+    let data_types: Vec<TypeDecl> = data_types
+        .into_iter()
+        .chain(
+            std::iter::once(root)
+                .chain(vendor_resources.iter().copied())
+                .flat_map(|r| application_data(r, "/plcopenxml/union", "union"))
+                .filter_map(|e| decls::union_type(ctx, e))
+                .collect::<Vec<_>>(),
+        )
+        .collect();
     // Interfaces first: bodies call each other in any order.
     let pou_els: Vec<&Element> = types_el
         .and_then(|t| t.child("pous"))
@@ -129,6 +140,12 @@ pub struct OtherFiles {
     /// The integer constants of the constant global lists (`N`, and `GVL.N` of a named list),
     /// upper case: array bounds of the other files may name them.
     pub constants: HashMap<String, i128>,
+    /// The global variables of the text files given with the XML (`.st` global lists), by
+    /// upper-case name: a box input or output of an LD/FBD body types them as the body's own.
+    pub globals: HashMap<String, TypeRef>,
+    /// The members of the named global lists of those files (`Glob.st` holding only `VAR_GLOBAL`
+    /// is the list `Glob`), by upper-case list, then member name: `Glob.a` into a box.
+    pub global_lists: HashMap<String, HashMap<String, TypeRef>>,
 }
 
 thread_local! {
@@ -175,6 +192,7 @@ pub fn interfaces(file: diagnostics::FileId, xml: &str) -> OtherFiles {
         pous,
         types,
         constants: ctx.constants.clone(),
+        ..OtherFiles::default()
     }
 }
 
@@ -385,6 +403,20 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             }
         }
     }
+    // the global variables of the text files given with this one: this file's own come first
+    OTHER_FILES.with(|o| {
+        if let Some(other) = o.borrow().as_ref() {
+            for (k, t) in &other.globals {
+                index.globals.entry(k.clone()).or_insert_with(|| t.clone());
+            }
+            for (list, members) in &other.global_lists {
+                let known = index.global_lists.entry(list.clone()).or_default();
+                for (k, t) in members {
+                    known.entry(k.clone()).or_insert_with(|| t.clone());
+                }
+            }
+        }
+    });
     let additional;
     (index.missing_types, additional) = check_types(ctx, &index, &data_types, &headers, &configs);
     // Beremiz's and OpenPLC's additional blocks (`PID`, `INTEGRAL`, ...) the file uses and does not
@@ -651,6 +683,8 @@ fn is_read_vendor_data(name: &str) -> bool {
         // EXTENDS / IMPLEMENTS of a POU, and the project's INTERFACEs (`xml_oop`)
         "/pouinheritance",
         "/plcopenxml/interface",
+        // a CODESYS UNION (`decls::union_type`)
+        "/plcopenxml/union",
     ]
     .iter()
     .any(|s| name.ends_with(s))
@@ -1197,8 +1231,15 @@ fn check_types(
     let additional = std::cell::RefCell::new(HashSet::new());
     let visit = |ty: &TypeRef, owner: &str, uses: &mut Vec<_>| {
         let mut t = ty;
-        while let TypeRef::Array { element, .. } = t {
-            t = element;
+        loop {
+            match t {
+                TypeRef::Array { element, .. } => t = element,
+                // `REFERENCE TO Lib.T`: the library's type is what is missing
+                TypeRef::Ref { target, .. } if matches!(&**target, TypeRef::Named(n) if n.name.contains('.')) => {
+                    t = target
+                }
+                _ => break,
+            }
         }
         if let TypeRef::Named(n) = t {
             if !catalogue::is_library_type(&n.name)

@@ -514,8 +514,11 @@ impl Session {
                 }
                 None => (file_lang, None),
             };
-            // (not for an OpenPLC Editor v4 graphical POU: its E1073 below says what it is)
-            if detected && openplc_v4_json_body(src).is_none() {
+            // (not for an OpenPLC Editor v4 graphical POU: its E1073 below says what it is, nor
+            // for a CODESYS V2.3 export, `.EXP`: a documented input whose language is its own)
+            let v23_export =
+                v23_text.is_some() || p.extension().is_some_and(|x| x.eq_ignore_ascii_case("exp"));
+            if detected && !v23_export && openplc_v4_json_body(src).is_none() {
                 self.diags.push(
                     Diagnostic::new(
                         code::W0302,
@@ -674,7 +677,18 @@ impl Session {
                 var_config.extend(entries);
             }
         }
-        self.compile_xml_files(deferred_xml, &mut units, &mut var_config, &mut pending);
+        let lists: Vec<(usize, String)> = text_lists
+            .iter()
+            .chain(twincat_lists.iter())
+            .cloned()
+            .collect();
+        self.compile_xml_files(
+            deferred_xml,
+            &lists,
+            &mut units,
+            &mut var_config,
+            &mut pending,
+        );
         // the names every file declares, and the global lists named after their files (a text
         // file is a list when it holds nothing else, as `text_lists::name_text_lists` names it)
         let is_list = |k: &usize| {
@@ -885,9 +899,12 @@ impl Session {
     /// files declare, known: `GVL.fbTimer(...)` with the list `GVL` in another file is no library.
     /// Compiles the PLCopen XML files read (`(unit index, file, Beremiz folder)`), each with the POU
     /// interfaces and data types of the others known ([`ladder_compiler::project::with_other_files`]).
+    /// `lists` are the text files that may be named global lists (`(unit index, name)`, named later by
+    /// `text_lists::name_text_lists` and the TwinCAT objects): their members are known qualified too.
     fn compile_xml_files(
         &mut self,
         files: Vec<(usize, diagnostics::FileId, Option<PathBuf>)>,
+        lists: &[(usize, String)],
         units: &mut [il_frontend::ast::CompilationUnit],
         var_config: &mut Vec<il_frontend::st::file::ConfigEntry>,
         pending: &mut Vec<il_frontend::st::file::PendingBody>,
@@ -900,11 +917,38 @@ impl Session {
         // imported one POU as PLCopen XML keeps its types in `.TcDUT` files)
         let xml_slots: std::collections::HashSet<usize> = files.iter().map(|f| f.0).collect();
         let mut text = ladder_compiler::project::OtherFiles::default();
-        for (_, u) in units
+        for (k, u) in units
             .iter()
             .enumerate()
             .filter(|(k, _)| !xml_slots.contains(k))
         {
+            // a file of global lists only, named after the file (or its TwinCAT object)
+            let only_lists = !u.items.is_empty()
+                && u.items
+                    .iter()
+                    .all(|i| matches!(i, il_frontend::ast::LibraryElement::GlobalVars(_)));
+            let file_list = lists
+                .iter()
+                .find(|(j, _)| *j == k && only_lists)
+                .map(|(_, n)| n.to_ascii_uppercase());
+            for b in u.items.iter().flat_map(|i| i.var_blocks()) {
+                if !matches!(b.kind, il_frontend::ast::VarKind::Global) {
+                    continue;
+                }
+                let list = b.name.as_ref().map(|n| n.key()).or(file_list.clone());
+                for v in &b.vars {
+                    text.globals
+                        .entry(v.name.key())
+                        .or_insert_with(|| v.ty.clone());
+                    if let Some(list) = &list {
+                        text.global_lists
+                            .entry(list.clone())
+                            .or_default()
+                            .entry(v.name.key())
+                            .or_insert_with(|| v.ty.clone());
+                    }
+                }
+            }
             for item in &u.items {
                 match item {
                     il_frontend::ast::LibraryElement::Pou(p) => {
@@ -921,6 +965,8 @@ impl Session {
             let mut other = ladder_compiler::project::OtherFiles::default();
             other.pous.extend(text.pous.iter().cloned());
             other.types.extend(text.types.iter().cloned());
+            other.globals.clone_from(&text.globals);
+            other.global_lists.clone_from(&text.global_lists);
             for (_, o) in interfaces.iter().enumerate().filter(|(j, _)| *j != i) {
                 other.pous.extend(o.pous.iter().cloned());
                 other.types.extend(o.types.iter().cloned());

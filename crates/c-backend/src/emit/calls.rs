@@ -64,8 +64,14 @@ impl Gen<'_> {
         instance: &VarRef,
         args: &CallArgs,
     ) {
-        // `CAL LIMIT(...)` (IEC draft Annex F): sema resolved a function call.
-        if cond == Condition::Always && matches!(info.callee, Some(Callee::Std { .. })) {
+        // `CAL LIMIT(...)`, `CAL Twice(v := n)` (IEC draft Annex F): sema resolved a function call
+        // (a conditional one is sema's E1018).
+        if cond == Condition::Always
+            && matches!(
+                info.callee,
+                Some(Callee::Std { .. } | Callee::Conversion { .. } | Callee::UserFunction(_))
+            )
+        {
             return self.function_call(b, i, info, args);
         }
         let Some(Place::Mem { lv, ty }) = self.place(b.scope, instance) else {

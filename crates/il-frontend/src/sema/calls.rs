@@ -1194,6 +1194,27 @@ impl Body<'_, '_> {
                     || self.a.pou_names.get(&n.key()).is_some_and(|id| {
                         self.a.model.pous[id.0 as usize].kind == PouKind::Function
                     });
+            if is_fn && cond != Condition::Always {
+                // a function has no instance whose call could be skipped with its outputs kept:
+                // the conditional forms call FB instances only (IEC 61131-3 IL: CALC / CALCN)
+                self.a
+                    .error(
+                        code::E1018,
+                        n.span,
+                        format!(
+                            "`{}` is a function: a conditional CAL (CALC, CALCN) calls a function block instance",
+                            n.name
+                        ),
+                    )
+                    .label("a function")
+                    .hint(format!(
+                        "jump over an unconditional call (`JMPCN skip`, `CAL {}(...)`, `skip:`), or call an FB instance",
+                        n.name
+                    ));
+                self.args_unchecked(args);
+                st.cr.ty = Some(Ty::ERROR);
+                return;
+            }
             if is_fn {
                 self.function_call(span, n, args, true, st, rec);
                 return;
