@@ -189,7 +189,8 @@ fn program_folder_named_like_a_library_block() {
 
 /// A program's own `Mixing` (its folder's `.var`) and the global `MIXING` (a `.var` file outside
 /// any program folder): read as IEC reads them (one name, the program's), with W1450 at the use
-/// spelled as the global, and none at the uses spelled as the program's variable.
+/// spelled as the global (in the program's part and in its actions file), and none at the uses
+/// spelled as the program's variable.
 #[test]
 fn case_shadowed_global_is_warned_at_its_use() {
     let dir = tempfile::tempdir().unwrap();
@@ -204,7 +205,12 @@ fn case_shadowed_global_is_warned_at_its_use() {
     write_in(
         root,
         "Tank/Main.st",
-        "PROGRAM _CYCLIC\n\tStirring := STIRRING OR TRUE;\n\tIF Stirring THEN\n\t\tsteps := steps + 1;\n\tEND_IF\nEND_PROGRAM\n",
+        "PROGRAM _CYCLIC\n\tStirring := STIRRING OR TRUE;\n\tIF Stirring THEN\n\t\tsteps := steps + 1;\n\tEND_IF\n\tCount;\nEND_PROGRAM\n",
+    );
+    write_in(
+        root,
+        "Tank/Actions.st",
+        "ACTION Count:\n\tIF STIRRING THEN\n\t\tsteps := steps + 10;\n\tEND_IF\nEND_ACTION\n",
     );
     let (code, out, err) = in_dir(
         root,
@@ -215,6 +221,7 @@ fn case_shadowed_global_is_warned_at_its_use() {
             "Global.var",
             "Tank/Variables.var",
             "Tank/Main.st",
+            "Tank/Actions.st",
             "--cycles",
             "2",
             "--watch",
@@ -222,13 +229,14 @@ fn case_shadowed_global_is_warned_at_its_use() {
         ],
     );
     assert_eq!(code, Some(0), "{err}");
-    assert_eq!(err.matches("warning[W1450]").count(), 1, "{err}");
+    assert_eq!(err.matches("warning[W1450]").count(), 2, "{err}");
     assert!(
         err.contains("warning[W1450]: `STIRRING` here is the program's own `Stirring`"),
         "{err}"
     );
     assert!(err.contains("Tank/Main.st:2:14"), "{err}");
-    assert_eq!(column(&out, "Tank.steps"), vec![1.0, 2.0]);
+    assert!(err.contains("Tank/Actions.st:2:5"), "{err}");
+    assert_eq!(column(&out, "Tank.steps"), vec![11.0, 22.0]);
 }
 
 /// A variable named `this` (a `REFERENCE TO` a structure) in a B&R program, set with `ACCESS` and

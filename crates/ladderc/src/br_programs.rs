@@ -56,8 +56,8 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
         }
     }
     let mut removals = Vec::new();
-    // each program made: its POU name and its parts' texts (for W1450)
-    let mut made: Vec<(String, Vec<diagnostics::Span>)> = Vec::new();
+    // each program made: its POU name and its folder (for W1450)
+    let mut made: Vec<(String, PathBuf)> = Vec::new();
     // the `.var` files that became a program's variables: their W0018 is withdrawn (W0020 says it)
     let mut own_files = Vec::new();
     let with_parts: Vec<PathBuf> = folders.keys().cloned().collect();
@@ -120,11 +120,7 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
                 false
             });
         }
-        let texts: Vec<diagnostics::Span> = parts
-            .iter()
-            .filter_map(|&(u, i, _)| pou_at(units, u, i).map(|p| p.span))
-            .collect();
-        made.push((name.clone(), texts));
+        made.push((name.clone(), dir.clone()));
         let init = part(0).and_then(|(u, i)| pou_at(units, u, i).cloned());
         let Some(LibraryElement::Pou(p)) = units[host.0].items.get_mut(host.1) else {
             continue;
@@ -218,10 +214,20 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
     }
     diags.retain(|d| d.code != code::W0018 || !d.span.is_some_and(|s| own_files.contains(&s.file)));
     drop_codeless_programs(units, map, &with_parts, &mut dir_of, diags);
-    case_shadows(units, map, &made, diags);
+    // the `.st` files of each program's folder: its parts and actions
+    let mut st_files: Vec<(PathBuf, diagnostics::FileId)> = Vec::new();
+    for (id, f) in map.files() {
+        let st = Path::new(&f.name)
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("st"));
+        if st {
+            st_files.push((dir_of(id), id));
+        }
+    }
+    case_shadows(units, map, &made, &st_files, diags);
 }
 
-/// W1450 at each use, in a B&R program's statements, of a name spelled as a global variable of a
+/// W1450 at each use, in a B&R program's `.st` files (its parts, its actions), of a name spelled as a global variable of a
 /// `.var` file and not as the program's own variable of that name in another case (`MIXING` and
 /// `Mixing`): two variables in case-sensitive Automation Studio, one under IEC 61131-3 (6.1.2),
 /// which ladderc keeps (the program's own); the warning says the run is not the controller's
@@ -230,7 +236,8 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
 fn case_shadows(
     units: &[CompilationUnit],
     map: &SourceMap,
-    made: &[(String, Vec<diagnostics::Span>)],
+    made: &[(String, PathBuf)],
+    st_files: &[(PathBuf, diagnostics::FileId)],
     diags: &mut Diagnostics,
 ) {
     use il_frontend::st::lexer::{lex, Tok};
@@ -253,7 +260,7 @@ fn case_shadows(
     if globals.is_empty() {
         return;
     }
-    for (name, texts) in made {
+    for (name, dir) in made {
         let Some(p) = units
             .iter()
             .flat_map(|u| u.items.iter())
@@ -279,11 +286,8 @@ fn case_shadows(
         if hidden.is_empty() {
             continue;
         }
-        for at in texts {
-            let text = &map.get(at.file).text;
-            let Some(src) = text.get(at.start as usize..at.end as usize) else {
-                continue;
-            };
+        for &(_, file) in st_files.iter().filter(|(d, _)| d == dir) {
+            let src = map.get(file).text.as_str();
             let toks = lex(src).0;
             for (k, t) in toks.iter().enumerate() {
                 if t.tok != Tok::Ident || (k > 0 && toks[k - 1].tok == Tok::Dot) {
@@ -294,9 +298,9 @@ fn case_shadows(
                     continue;
                 };
                 let span = diagnostics::Span {
-                    file: at.file,
-                    start: at.start + t.range.start as u32,
-                    end: at.start + t.range.end as u32,
+                    file,
+                    start: t.range.start as u32,
+                    end: t.range.end as u32,
                 };
                 diags.push(
                     Diagnostic::new(
