@@ -112,6 +112,21 @@ pub fn parse_named(
     }
 }
 
+/// The ending of the POU name of a B&R program (named after its folder) whose folder is named like
+/// a block or type of the project (a library's `FUNCTION_BLOCK Blink` and the program folder
+/// `Logical/Blink/`, as B&R's brdkCert sample has them): Automation Studio never names a program
+/// in IEC code, so its name does not enter the namespace of types and blocks; the POU is named
+/// `Blink__BR_PROGRAM` and its instance, for tracing, `Blink` ([`program_watch_name`]).
+pub const BR_PROGRAM_SUFFIX: &str = "__BR_PROGRAM";
+
+/// The name program `pou` is traced under (`Blink` for `Blink__BR_PROGRAM`, see
+/// [`BR_PROGRAM_SUFFIX`]): its own name otherwise.
+pub fn program_watch_name(pou: &str) -> &str {
+    pou.strip_suffix(BR_PROGRAM_SUFFIX)
+        .filter(|n| !n.is_empty())
+        .unwrap_or(pou)
+}
+
 /// A valid IEC identifier made from a file stem: other characters become `_`, a leading digit gets a `_`
 /// prefix (`19_il-test` -> `_19_il_test`).
 pub fn implicit_program_name(stem: &str) -> String {

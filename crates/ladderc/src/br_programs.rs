@@ -56,9 +56,22 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
         }
     }
     let mut removals = Vec::new();
+    // each program made: its POU name and its folder (for W1450)
+    let mut made: Vec<(String, PathBuf)> = Vec::new();
     // the `.var` files that became a program's variables: their W0018 is withdrawn (W0020 says it)
     let mut own_files = Vec::new();
     let with_parts: Vec<PathBuf> = folders.keys().cloned().collect();
+    // the names of the blocks, functions and types (not the program parts): a program folder
+    // named like one is a program of another name (see `il_frontend::BR_PROGRAM_SUFFIX`)
+    let taken: std::collections::HashSet<String> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .flat_map(|item| match item {
+            LibraryElement::Pou(p) if !PARTS.iter().any(|n| p.name.is(n)) => vec![p.name.key()],
+            LibraryElement::DataTypes(types) => types.iter().map(|t| t.name.key()).collect(),
+            _ => Vec::new(),
+        })
+        .collect();
     for (dir, parts) in folders {
         // one of each part (two `_CYCLIC` in one folder: the checks' E1002)
         if PARTS
@@ -76,7 +89,12 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
             .file_name()
             .and_then(|n| n.to_str())
             .unwrap_or("BRProgram");
-        let name = il_frontend::implicit_program_name(folder);
+        let shown = il_frontend::implicit_program_name(folder);
+        let name = if taken.contains(&shown.to_ascii_uppercase()) {
+            format!("{shown}{}", il_frontend::BR_PROGRAM_SUFFIX)
+        } else {
+            shown.clone()
+        };
         // the folder's `.var` blocks: the program's own variables
         let mut blocks = Vec::new();
         for unit in units.iter_mut() {
@@ -102,6 +120,7 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
                 false
             });
         }
+        made.push((name.clone(), dir.clone()));
         let init = part(0).and_then(|(u, i)| pou_at(units, u, i).cloned());
         let Some(LibraryElement::Pou(p)) = units[host.0].items.get_mut(host.1) else {
             continue;
@@ -111,7 +130,7 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
             Diagnostic::new(
                 code::W0020,
                 Severity::Note,
-                format!("B&R program `{name}` (its folder): the folder's .var variables, _INIT once, then _CYCLIC each cycle"),
+                format!("B&R program `{shown}` (its folder): the folder's .var variables, _INIT once, then _CYCLIC each cycle"),
             )
             .at(at)
             .with_hint("as Automation Studio builds a program of a folder; _EXIT does not run (a run has no stop)"),
@@ -195,6 +214,112 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
     }
     diags.retain(|d| d.code != code::W0018 || !d.span.is_some_and(|s| own_files.contains(&s.file)));
     drop_codeless_programs(units, map, &with_parts, &mut dir_of, diags);
+    // the `.st` files of each program's folder: its parts and actions
+    let mut st_files: Vec<(PathBuf, diagnostics::FileId)> = Vec::new();
+    for (id, f) in map.files() {
+        let st = Path::new(&f.name)
+            .extension()
+            .is_some_and(|e| e.eq_ignore_ascii_case("st"));
+        if st {
+            st_files.push((dir_of(id), id));
+        }
+    }
+    case_shadows(units, map, &made, &st_files, diags);
+}
+
+/// W1450 at each use, in a B&R program's `.st` files (its parts, its actions), of a name spelled as a global variable of a
+/// `.var` file and not as the program's own variable of that name in another case (`MIXING` and
+/// `Mixing`): two variables in case-sensitive Automation Studio, one under IEC 61131-3 (6.1.2),
+/// which ladderc keeps (the program's own); the warning says the run is not the controller's
+/// (round 27, before: silent). Only there: elsewhere a POU that hides a global by a name differing
+/// in case is read alike by every IEC tool (CODESYS, TwinCAT and the standard ignore case).
+fn case_shadows(
+    units: &[CompilationUnit],
+    map: &SourceMap,
+    made: &[(String, PathBuf)],
+    st_files: &[(PathBuf, diagnostics::FileId)],
+    diags: &mut Diagnostics,
+) {
+    use il_frontend::st::lexer::{lex, Tok};
+    // the globals of `.var` files: spelling and declaration
+    let globals: Vec<&Ident> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|item| match item {
+            LibraryElement::GlobalVars(b)
+                if Path::new(&map.get(b.span.file).name)
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("var")) =>
+            {
+                Some(b.vars.iter().map(|v| &v.name))
+            }
+            _ => None,
+        })
+        .flatten()
+        .collect();
+    if globals.is_empty() {
+        return;
+    }
+    for (name, dir) in made {
+        let Some(p) = units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .find_map(|item| match item {
+                LibraryElement::Pou(p) if p.kind == PouKind::Program && p.name.is(name) => Some(p),
+                _ => None,
+            })
+        else {
+            continue;
+        };
+        // (the global, the program's own variable) differing in case only
+        let hidden: Vec<(&Ident, &Ident)> = p
+            .var_blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .filter_map(|v| {
+                globals
+                    .iter()
+                    .find(|g| g.key() == v.name.key() && g.name != v.name.name)
+                    .map(|g| (*g, &v.name))
+            })
+            .collect();
+        if hidden.is_empty() {
+            continue;
+        }
+        for &(_, file) in st_files.iter().filter(|(d, _)| d == dir) {
+            let src = map.get(file).text.as_str();
+            let toks = lex(src).0;
+            for (k, t) in toks.iter().enumerate() {
+                if t.tok != Tok::Ident || (k > 0 && toks[k - 1].tok == Tok::Dot) {
+                    continue;
+                }
+                let word = &src[t.range.clone()];
+                let Some((g, own)) = hidden.iter().find(|(g, _)| g.name == word) else {
+                    continue;
+                };
+                let span = diagnostics::Span {
+                    file,
+                    start: t.range.start as u32,
+                    end: t.range.end as u32,
+                };
+                diags.push(
+                    Diagnostic::new(
+                        code::W1450,
+                        Severity::Warning,
+                        format!(
+                            "`{word}` here is the program's own `{}` (IEC 61131-3 ignores case): in case-sensitive B&R Automation Studio it is the global `{}`, another variable",
+                            own.name, g.name
+                        ),
+                    )
+                    .at(span)
+                    .with_primary_label("spelled as the global")
+                    .with_label(own.span, "the program's own variable (IEC 61131-3 ignores case: it hides the global)")
+                    .with_label(g.span, "the global variable")
+                    .with_hint("rename one of the two (`ladderc explain W1450`): this run differs from the controller's"),
+                );
+            }
+        }
+    }
 }
 
 /// `stmts` (an `_INIT` body joined before `_CYCLIC`) with each RETURN a jump to `end`.
@@ -215,8 +340,9 @@ fn return_to(stmts: &mut [IlStmt], end: &Ident) {
     }
 }
 
-/// The `.var` and `.typ` files of a B&R program folder (it holds `IEC.prg`) none of whose program
-/// parts is among the inputs (its code is LD, or not given): the program's own declarations
+/// The `.var` and `.typ` files of a B&R program folder (it holds `IEC.prg`, or `ANSIC.prg` for a
+/// program in C, round 27) none of whose program parts is among the inputs (its code is LD or C,
+/// or not given): the program's own declarations
 /// (`Private` in IEC.prg), which no other POU may name, so they are not compiled; one note W0022
 /// per folder. Before: read as global, two such programs' `Variables.var` were E1002 duplicates.
 fn drop_codeless_programs(
@@ -248,7 +374,7 @@ fn drop_codeless_programs(
             let codeless = !with_parts.contains(&dir)
                 && *program_folder
                     .entry(dir.clone())
-                    .or_insert_with(|| dir.join("IEC.prg").is_file());
+                    .or_insert_with(|| is_program_folder(&dir));
             if codeless {
                 dropped.entry(dir).or_insert(span);
                 files.push(file);
@@ -267,7 +393,7 @@ fn drop_codeless_programs(
                 format!("B&R program `{folder}`: none of its code is among the inputs, so its own .var and .typ declarations are not compiled"),
             )
             .at(at)
-            .with_hint("a program written in LD (or another language ladderc does not read) declares them for itself alone; give its .st files to compile it"),
+            .with_hint("a program written in LD or C (or another language ladderc does not read) declares them for itself alone; give its .st files to compile it"),
         );
     }
 }
@@ -289,7 +415,7 @@ pub fn share_private_types(units: &mut [CompilationUnit], map: &SourceMap) {
         }
         let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
         let dir = path.parent()?.to_path_buf();
-        dir.join("IEC.prg").is_file().then_some(dir)
+        is_program_folder(&dir).then_some(dir)
     };
     // the declaration without its places, to compare two of them
     fn shape(t: &il_frontend::ast::TypeDecl) -> serde_json::Value {
@@ -495,6 +621,14 @@ fn lists_package(dir: &Path, sub: &Path) -> bool {
                 })
             })
     })
+}
+
+/// Whether `dir` is a B&R program folder: it holds `IEC.prg` (a program in IEC languages) or
+/// `ANSIC.prg` (a program in C or C++, round 27: its `.var` files are as private to it).
+fn is_program_folder(dir: &Path) -> bool {
+    ["IEC.prg", "ANSIC.prg"]
+        .iter()
+        .any(|n| dir.join(n).is_file())
 }
 
 fn pou_at(units: &[CompilationUnit], u: usize, i: usize) -> Option<&Pou> {

@@ -123,6 +123,9 @@ pub struct Session {
     /// The files read so far that are TwinCAT 3 objects (`.TcPOU` ...), known to the semantic
     /// analysis ([`il_frontend::sema::TwinCatFiles`]).
     pub twincat_files: Vec<diagnostics::FileId>,
+    /// B&R library data types not compiled as they are made of stub blocks
+    /// ([`crate::split_blocks::drop_stub_types`]): their uses' E1003 name the stub.
+    stub_types: Vec<crate::split_blocks::StubType>,
 }
 
 /// What [`Session::parse`] produced: the user's units and what they are compiled with.
@@ -223,6 +226,7 @@ impl Session {
             task_cycle_ms: None,
             libraries: Vec::new(),
             twincat_files: Vec::new(),
+            stub_types: Vec::new(),
         }
     }
 
@@ -814,7 +818,7 @@ impl Session {
             let n = &map.get(f).name;
             n.rsplit(['/', '\\']).next().unwrap_or(n).to_string()
         };
-        crate::split_blocks::join(
+        let stubs = crate::split_blocks::join(
             &mut units,
             &mut pending,
             |f| fun_files.contains(&f),
@@ -822,6 +826,14 @@ impl Session {
             file_name,
             &mut self.diags,
         );
+        // B&R: a library's data types made of its stub blocks are not compiled either
+        let folder = |f: diagnostics::FileId| {
+            let name = Path::new(&map.get(f).name);
+            let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
+            path.parent().unwrap_or(Path::new("")).to_path_buf()
+        };
+        let dropped = crate::split_blocks::drop_stub_types(&mut units, &stubs, folder, file_name);
+        self.stub_types.extend(dropped);
         il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
         // a file's description and attribute pragmas (`{ DE:"..." }` on each variable): one note
         il_frontend::st::lexer::collapse_metadata_notes(&mut self.diags);
@@ -1281,6 +1293,7 @@ impl Session {
         } else {
             il_frontend::sema::analyze_for_code(units, &mut self.diags)
         };
+        crate::split_blocks::name_stub_types(&self.stub_types, &mut self.diags);
         self.foreign_additional_blocks();
         model
     }

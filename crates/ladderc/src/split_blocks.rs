@@ -44,7 +44,7 @@ pub fn join(
     provided: impl Fn(&str) -> Option<Vec<ProvidedParam>>,
     file_name: impl Fn(diagnostics::FileId) -> String,
     diags: &mut Diagnostics,
-) {
+) -> Vec<(String, diagnostics::FileId)> {
     // (unit, item) of every function block and function, by upper-case name
     let mut by_name: HashMap<String, Vec<(usize, usize)>> = HashMap::new();
     for (u, unit) in units.iter().enumerate() {
@@ -173,6 +173,10 @@ pub fn join(
             removals.push((u, i));
         }
     }
+    let stubs: Vec<(String, diagnostics::FileId)> = skipped
+        .iter()
+        .flat_map(|(f, _, names)| names.iter().map(|n| (n.clone(), *f)))
+        .collect();
     for (_, at, names) in skipped {
         let shown: Vec<String> = names.iter().take(8).map(|n| format!("`{n}`")).collect();
         let more = if names.len() > 8 {
@@ -201,6 +205,134 @@ pub fn join(
     for (u, i) in removals.into_iter().rev() {
         units[u].items.remove(i);
     }
+    stubs
+}
+
+/// A data type of a B&R library dropped with the stubs it is made of (see [`drop_stub_types`]).
+pub struct StubType {
+    /// The type's name, upper case.
+    pub key: String,
+    /// The type's name as declared.
+    pub name: String,
+    /// The stub block it is made of (directly or through another such type).
+    pub stub: String,
+    /// The file name of the `.fun` file declaring the stub.
+    pub stub_file: String,
+    /// Where the stub is declared.
+    pub stub_at: diagnostics::Span,
+}
+
+/// The data types declared in the folder of a `.fun` file whose blocks are stubs (`stubs`, from
+/// [`join`]: B&R's system library `runtime`, whose `runtime.typ` declares `SFCActionType` with a
+/// field `AC : SFCActionControl`, a block `runtime.fun` only declares) that are made of such a
+/// stub (a field, an array element, an alias; or of another such type): as unavailable as the
+/// stub, so not compiled either (before round 27: one E1003 per field in the vendor's file, though
+/// no user code named the type). A use of one is the checks' E1003 where it is made, which
+/// [`name_stub_types`] words to name the stub.
+pub fn drop_stub_types(
+    units: &mut [CompilationUnit],
+    stubs: &[(String, diagnostics::FileId)],
+    folder: impl Fn(diagnostics::FileId) -> std::path::PathBuf,
+    file_name: impl Fn(diagnostics::FileId) -> String,
+) -> Vec<StubType> {
+    if stubs.is_empty() {
+        return Vec::new();
+    }
+    let lib_dirs: Vec<std::path::PathBuf> = stubs.iter().map(|(_, f)| folder(*f)).collect();
+    // the stub each unavailable name stands for: (key, stub name, stub file)
+    let mut gone: HashMap<String, (String, diagnostics::FileId)> = stubs
+        .iter()
+        .map(|(n, f)| (n.to_ascii_uppercase(), (n.clone(), *f)))
+        .collect();
+    fn named(t: &TypeRef) -> Option<&il_frontend::ast::Ident> {
+        match t {
+            TypeRef::Named(i) => Some(i),
+            TypeRef::Array { element, .. } => named(element),
+            _ => None,
+        }
+    }
+    let mut dropped: Vec<StubType> = Vec::new();
+    // until no more: a type made of a dropped type is dropped too
+    loop {
+        let mut more = false;
+        for unit in units.iter_mut() {
+            for item in unit.items.iter_mut() {
+                let LibraryElement::DataTypes(types) = item else {
+                    continue;
+                };
+                types.retain(|t| {
+                    if !lib_dirs.contains(&folder(t.name.span.file)) {
+                        return true;
+                    }
+                    let made_of: Vec<&TypeRef> = match &t.def {
+                        il_frontend::ast::TypeDef::Alias { ty, .. } => vec![ty],
+                        il_frontend::ast::TypeDef::Struct { fields } => {
+                            fields.iter().map(|f| &f.ty).collect()
+                        }
+                        il_frontend::ast::TypeDef::Enum { .. } => Vec::new(),
+                    };
+                    let Some((stub, file)) = made_of
+                        .iter()
+                        .filter_map(|ty| named(ty))
+                        .find_map(|n| gone.get(&n.key()).cloned())
+                    else {
+                        return true;
+                    };
+                    dropped.push(StubType {
+                        key: t.name.key(),
+                        name: t.name.name.clone(),
+                        stub: stub.clone(),
+                        stub_file: file_name(file),
+                        stub_at: t.name.span,
+                    });
+                    gone.insert(t.name.key(), (stub, file));
+                    more = true;
+                    false
+                });
+            }
+        }
+        if !more {
+            break;
+        }
+    }
+    dropped
+}
+
+/// The checks' E1003 `unknown type `T`` for a type [`drop_stub_types`] dropped, worded to name the
+/// stub it is made of (one error where the user's code uses it, as for the stub itself).
+pub fn name_stub_types(dropped: &[StubType], diags: &mut Diagnostics) {
+    if dropped.is_empty() {
+        return;
+    }
+    let which = |d: &Diagnostic| -> Option<&StubType> {
+        if d.code != code::E1003 {
+            return None;
+        }
+        let name = d
+            .message
+            .strip_prefix("unknown type `")?
+            .strip_suffix('`')?;
+        dropped.iter().find(|t| t.key == name.to_ascii_uppercase())
+    };
+    let mut worded = Vec::new();
+    diags.retain(|d| match which(d) {
+        Some(t) => {
+            let mut e = d.clone();
+            e.message = format!(
+                "`{}` is made of `{}`, a block {} declares without statements (not compiled, W0021): not available",
+                t.name, t.stub, t.stub_file
+            );
+            e.labels.push(diagnostics::Label {
+                span: t.stub_at,
+                message: "the type, not compiled".to_string(),
+            });
+            e.hint = Some("a block of a B&R system library ladderc does not provide; give the library's source if you have it, or do without the type".to_string());
+            worded.push(e);
+            false
+        }
+        None => true,
+    });
+    diags.extend(worded);
 }
 
 /// The first difference between the stub `p`'s parameters and those of ladderc's block: (the

@@ -62,7 +62,7 @@ impl Gen<'_> {
                 {
                     v.push(Instance {
                         c_name: mangle::implicit_instance(&p.name),
-                        watch_name: p.name.clone(),
+                        watch_name: il_frontend::program_watch_name(&p.name).to_string(),
                         pou: PouId(i as u32),
                         configured: None,
                         called_only: false,
@@ -97,7 +97,7 @@ impl Gen<'_> {
                 {
                     v.push(Instance {
                         c_name: mangle::implicit_instance(&p.name),
-                        watch_name: p.name.clone(),
+                        watch_name: il_frontend::program_watch_name(&p.name).to_string(),
                         pou: id,
                         configured: None,
                         called_only: true,

@@ -1462,9 +1462,17 @@ impl Analyzer<'_> {
                 let total: u128 = dims.iter().fold(1u128, |n, d| n.saturating_mul(d.len()));
                 let mut out = Vec::new();
                 for e in elems {
+                    // `[(0)]`, `2(0)`: B&R Automation Studio's zero initializer of a structure
+                    // element, its type's initial value, as `(0)` of a whole structure and
+                    // `9((0))` are (round 27, before: E1025)
+                    let zero = matches!(
+                        &e.value,
+                        Initializer::Value(Operand::Literal(l))
+                            if matches!(l.kind, crate::ast::LiteralKind::Int(0)) && l.type_prefix.is_none()
+                    ) && matches!(**element, Type::Struct(_));
                     let null = matches!(&e.value,
                         Initializer::Value(Operand::Var(v)) if v.base.is("NULL") && v.accessors.is_empty());
-                    let v = match (null && matches!(**element, Type::Ref(_)))
+                    let v = match ((null && matches!(**element, Type::Ref(_))) || zero)
                         .then(|| ConstValue::Struct(Vec::new()))
                         .or_else(|| self.const_init(&e.value, element, consts))
                     {

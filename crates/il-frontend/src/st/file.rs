@@ -885,14 +885,40 @@ fn keyword_declarations(
     let mut in_struct = false;
     let mut fields = Vec::new();
     let stubs = declaration_only_blocks(src, toks);
+    // parentheses open in a declaration's initial value
+    let mut depth = 0usize;
     let mut k = 0;
     while k < toks.len() {
         let t = &toks[k];
         k += 1;
+        match t.tok {
+            Tok::LParen if in_decl => depth += 1,
+            Tok::RParen => depth = depth.saturating_sub(1),
+            Tok::Semi => depth = 0,
+            _ => {}
+        }
         if !matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
             continue;
         }
         let w = word(src, t).to_ascii_uppercase();
+        // a field named with a keyword in a structure's initial value (`(Name := 'calc', Type :=
+        // 2)`, as B&R Automation Studio writes them): as in its declaration, a name of the same
+        // length put back after the parse (round 27, before: a parse cascade)
+        if in_decl
+            && depth > 0
+            && k >= 2
+            && matches!(toks[k - 2].tok, Tok::LParen | Tok::Comma)
+            && toks.get(k).is_some_and(|n| n.tok == Tok::Assign)
+            && BLOCK_WORDS.contains(&w.as_str())
+        {
+            let r = t.range.clone();
+            let name = word(src, t).to_string();
+            let same_length = format!("_{}", &name[1..]);
+            text.get_or_insert_with(|| src.to_string())
+                .replace_range(r.clone(), &same_length);
+            fields.push((r.start, name));
+            continue;
+        }
         let followed_by_colon = toks
             .get(k)
             .is_some_and(|n| matches!(n.tok, Tok::Colon | Tok::Comma));
@@ -1022,6 +1048,53 @@ fn declaration_only_blocks(src: &str, toks: &[Token]) -> Vec<std::ops::Range<usi
 fn restore_field_names(unit: &mut CompilationUnit, fields: &[(usize, String)]) {
     if fields.is_empty() {
         return;
+    }
+    // the fields named in structure initializers (`(Type := 2)`)
+    fn in_init(i: &mut crate::ast::Initializer, fields: &[(usize, String)]) {
+        match i {
+            crate::ast::Initializer::Struct(es, _) => {
+                for (n, v) in es {
+                    if let Some((_, name)) =
+                        fields.iter().find(|(s, _)| *s == n.span.start as usize)
+                    {
+                        n.name.clone_from(name);
+                    }
+                    in_init(v, fields);
+                }
+            }
+            crate::ast::Initializer::Array(es, _) => {
+                es.iter_mut().for_each(|e| in_init(&mut e.value, fields))
+            }
+            _ => {}
+        }
+    }
+    for item in &mut unit.items {
+        match item {
+            LibraryElement::DataTypes(types) => {
+                for t in types.iter_mut() {
+                    match &mut t.def {
+                        crate::ast::TypeDef::Struct { fields: decls } => decls
+                            .iter_mut()
+                            .filter_map(|d| d.init.as_mut())
+                            .for_each(|i| in_init(i, fields)),
+                        crate::ast::TypeDef::Alias { init: Some(i), .. } => in_init(i, fields),
+                        _ => {}
+                    }
+                }
+            }
+            LibraryElement::Pou(p) => p
+                .var_blocks
+                .iter_mut()
+                .flat_map(|b| b.vars.iter_mut())
+                .filter_map(|d| d.init.as_mut())
+                .for_each(|i| in_init(i, fields)),
+            LibraryElement::GlobalVars(b) => b
+                .vars
+                .iter_mut()
+                .filter_map(|d| d.init.as_mut())
+                .for_each(|i| in_init(i, fields)),
+            _ => {}
+        }
     }
     let mut parameters = Vec::new();
     for item in &mut unit.items {

@@ -2033,10 +2033,13 @@ impl<'s, 'd> Parser<'s, 'd> {
             }
             // `THIS` alone (not `THIS^`): the instance's address, `ADR(THIS^)` (CODESYS, TwinCAT:
             // `pSelf := THIS;`, `pSelf : POINTER TO FB_X := THIS;` in a method's VAR_INST)
+            // (`this.x` where `THIS.x` is no block's own variable, a program's: a variable named
+            // `this`, B&R Automation Studio's ST having no THIS; round 27, before: E0104/E0100
+            // at each read)
             Tok::Ident
                 if self.ident(&t).is("THIS")
                     && *self.peek_at(1) != Tok::Caret
-                    && !(self.this_dot && *self.peek_at(1) == Tok::Dot) =>
+                    && *self.peek_at(1) != Tok::Dot =>
             {
                 self.bump();
                 let this = Expr {
