@@ -152,6 +152,10 @@ impl Analyzer<'_> {
         for id in ids {
             self.resolve_user_type(id);
         }
+        // `Magic : BYTE := C_MAGIC;` in a STRUCT: IEC 61131-3 ed. 3 takes a constant expression
+        // (named constants included) as a field's initial value, and CODESYS/TwinCAT take a
+        // VAR_GLOBAL CONSTANT declared anywhere in the project
+        let field_consts = self.early_global_consts(units);
         for d in struct_declaration_order(units) {
             let ast::TypeDef::Struct { fields } = &d.def else {
                 continue;
@@ -172,7 +176,7 @@ impl Analyzer<'_> {
                 span: d.span,
             }];
             self.declaring_fields = true;
-            let vars = self.declare_vars(&blocks, &Consts::new(), None);
+            let vars = self.declare_vars(&blocks, &field_consts, None);
             self.declaring_fields = false;
             if d.union {
                 self.check_union_members(&d.name.name, &vars);
@@ -271,11 +275,21 @@ impl Analyzer<'_> {
         }
         // Configuration globals (needed by VAR_EXTERNAL).
         let mut configs = Vec::new();
+        let mut deferred_config_inits: Vec<(usize, Option<usize>, usize, ast::Initializer)> =
+            Vec::new();
         for unit in units {
             for item in &unit.items {
                 if let LibraryElement::Configuration(c) = item {
                     let config = self.model.configurations.len();
-                    let globals = self.declare_vars(&c.globals, &global_consts, None);
+                    // `t1 : Tank := (volume := 100.0);`: read once the block's variables are
+                    // declared, as for the globals above
+                    let (blocks, held) = self.hold_block_instance_inits(&c.globals);
+                    let globals = self.declare_vars(&blocks, &global_consts, None);
+                    for (index, v) in globals.iter().enumerate() {
+                        if let Some((_, i)) = held.iter().find(|(at, _)| *at == v.span) {
+                            deferred_config_inits.push((config, None, index, i.clone()));
+                        }
+                    }
                     self.record_lists(&c.globals, &globals, |index| GlobalRef::Configuration {
                         config,
                         index,
@@ -285,7 +299,18 @@ impl Analyzer<'_> {
                         .iter()
                         .enumerate()
                         .map(|(resource, r)| {
-                            let globals = self.declare_vars(&r.globals, &global_consts, None);
+                            let (blocks, held) = self.hold_block_instance_inits(&r.globals);
+                            let globals = self.declare_vars(&blocks, &global_consts, None);
+                            for (index, v) in globals.iter().enumerate() {
+                                if let Some((_, i)) = held.iter().find(|(at, _)| *at == v.span) {
+                                    deferred_config_inits.push((
+                                        config,
+                                        Some(resource),
+                                        index,
+                                        i.clone(),
+                                    ));
+                                }
+                            }
                             self.record_lists(&r.globals, &globals, |index| GlobalRef::Resource {
                                 config,
                                 resource,
@@ -320,6 +345,19 @@ impl Analyzer<'_> {
             let value = self.const_init(&init, &ty, &global_consts);
             self.model.globals[i].init = value;
         }
+        for (config, resource, index, init) in deferred_config_inits {
+            let c = &self.model.configurations[config];
+            let ty = match resource {
+                None => c.globals[index].ty.clone(),
+                Some(r) => c.resources[r].globals[index].ty.clone(),
+            };
+            let value = self.const_init(&init, &ty, &global_consts);
+            let c = &mut self.model.configurations[config];
+            match resource {
+                None => c.globals[index].init = value,
+                Some(r) => c.resources[r].globals[index].init = value,
+            }
+        }
         // `ADR(x)` in a global's initial value (`fb : FB_M := (pLamp := ADR(GVL.lamp))`)
         self.global_address_initial_values(units);
         // Tasks and program instances.
@@ -329,6 +367,85 @@ impl Analyzer<'_> {
             }
         }
         pous
+    }
+
+    /// `blocks` without the structured initial values of instances of the project's function
+    /// blocks (`t1 : Tank := (volume := 100.0)`), which are read once the blocks' variables are
+    /// declared; the held values by the span of their variable's name.
+    fn hold_block_instance_inits(
+        &self,
+        blocks: &[VarBlock],
+    ) -> (Vec<VarBlock>, Vec<(Span, ast::Initializer)>) {
+        let mut held = Vec::new();
+        let mut out = blocks.to_vec();
+        for b in &mut out {
+            for d in &mut b.vars {
+                if matches!(d.init, Some(ast::Initializer::Struct(..)))
+                    && matches!(&d.ty, TypeRef::Named(n) if self.pou_names.contains_key(&n.key()))
+                {
+                    if let Some(i) = d.init.take() {
+                        held.push((d.name.span, i));
+                    }
+                }
+            }
+        }
+        (out, held)
+    }
+
+    /// The scalar (elementary, string, enumerated) constants of the project's VAR_GLOBAL CONSTANT
+    /// blocks, top-level and of configurations, evaluated silently before the structures are
+    /// declared, for the initial values of structure fields (`Magic : BYTE := C_MAGIC;`). A
+    /// constant may use one declared after it (a second round); their errors are reported when
+    /// the globals are declared.
+    fn early_global_consts(&mut self, units: &[CompilationUnit]) -> Consts {
+        let blocks: Vec<&VarBlock> = units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .flat_map(|item| match item {
+                LibraryElement::GlobalVars(b) => vec![b],
+                LibraryElement::Configuration(c) => c
+                    .globals
+                    .iter()
+                    .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+                    .collect(),
+                _ => Vec::new(),
+            })
+            .filter(|b| b.constant)
+            .collect();
+        let mut consts = Consts::new();
+        if blocks.is_empty() {
+            return consts;
+        }
+        let silent = std::mem::replace(&mut self.silent, true);
+        for _round in 0..2 {
+            for b in &blocks {
+                for d in &b.vars {
+                    let key = d.name.key();
+                    if consts.contains_key(&key) {
+                        continue;
+                    }
+                    let (
+                        Some(init @ ast::Initializer::Value(_)),
+                        TypeRef::Named(_) | TypeRef::String { .. },
+                    ) = (&d.init, &d.ty)
+                    else {
+                        continue;
+                    };
+                    let ty = self.resolve_type(&d.ty);
+                    if !matches!(
+                        ty,
+                        Type::Elementary(_) | Type::String { .. } | Type::Enum(_)
+                    ) {
+                        continue;
+                    }
+                    if let Some(v) = self.const_init(init, &ty, &consts) {
+                        consts.insert(key, (ty, v));
+                    }
+                }
+            }
+        }
+        self.silent = silent;
+        consts
     }
 
     /// Adds a global to the named list `list` (a CODESYS GVL), creating the list on first use.

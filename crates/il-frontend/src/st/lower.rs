@@ -559,6 +559,7 @@ impl<'d> PouLowering<'d> {
                     of: None,
                     span,
                     call_scoped: false,
+                    address_of: false,
                 })),
                 span,
             ));
@@ -1874,6 +1875,7 @@ impl<'d> PouLowering<'d> {
                             of: None,
                             span: e.span,
                             call_scoped: false,
+                            address_of: false,
                         })));
                     }
                     [Arg {
@@ -1896,6 +1898,7 @@ impl<'d> PouLowering<'d> {
                             of: Some(of),
                             span: e.span,
                             call_scoped: false,
+                            address_of: false,
                         })));
                     }
                     [Arg {
@@ -1922,6 +1925,7 @@ impl<'d> PouLowering<'d> {
                             of: None,
                             span: e.span,
                             call_scoped: false,
+                            address_of: false,
                         })));
                     }
                     _ => {
@@ -1939,6 +1943,7 @@ impl<'d> PouLowering<'d> {
                             of: None,
                             span: e.span,
                             call_scoped: false,
+                            address_of: false,
                         })));
                     }
                 }
@@ -1956,6 +1961,7 @@ impl<'d> PouLowering<'d> {
                     of: None,
                     span: e.span,
                     call_scoped: false,
+                    address_of: false,
                 })));
             }
             (
@@ -1977,6 +1983,7 @@ impl<'d> PouLowering<'d> {
                 of: Some(v),
                 span: e.span,
                 call_scoped,
+                address_of: matches!(&e.kind, ExprKind::Call { name, .. } if name.is("ADR")),
             }))),
             other => {
                 diags.push(
@@ -2020,6 +2027,7 @@ impl<'d> PouLowering<'d> {
                 of: None,
                 span: p.span,
                 call_scoped: false,
+                address_of: false,
             })));
         }
         let mut accessors = Vec::new();
@@ -2768,6 +2776,7 @@ impl<'d> PouLowering<'d> {
                     of: None,
                     span,
                     call_scoped: false,
+                    address_of: false,
                 }));
                 out.push(simple(Op::Ne, false, Some(null), span));
             }
