@@ -11,7 +11,9 @@
 //! - a function block instance's structured initial value in a CONFIGURATION's VAR_GLOBAL
 //!   (`t1 : Tank := (volume := 100.0);`; before: one E1025 per field);
 //! - constant expressions inside structure initial values, also inside array initial values
-//!   (`(dX := len / 2.0, dY := -len)`; before: E0011).
+//!   (`(dX := len / 2.0, dY := -len)`; before: E0011);
+//! - a constant expression as a CASE label (`ST_RUN + ST_ERR:`, also in a range; before: E0106)
+//!   and a CHAR literal label on a CHAR selector (`'0':`; before: two E0100 per branch).
 
 mod common;
 use common::{check_text, column, run_text, run_traced_files};
@@ -311,4 +313,74 @@ END_PROGRAM
     assert_eq!(column(&trace, "Main.b.n"), [13.0]);
     assert_eq!(column(&trace, "Main.arr[0].dX"), [0.8]);
     assert_eq!(column(&trace, "Main.arr[1].n"), [8.0]);
+}
+
+/// CASE labels that are constant expressions (IEC 61131-3 ed. 3: Case_List_Elem is a Subrange or
+/// a Constant_Expr; CODESYS documents it): `ST_RUN + ST_ERR`, `2 * ST_RUN` in a list, and a range
+/// with expression bounds; the selector steps by 10 through every branch and ELSE.
+#[test]
+fn a_case_label_may_be_a_constant_expression() {
+    let src = "PROGRAM Main
+VAR CONSTANT
+  ST_RUN : INT := 10;
+  ST_ERR : INT := 100;
+END_VAR
+VAR
+  state : INT;
+  n : INT;
+END_VAR
+state := state + 10;
+CASE state OF
+  ST_RUN:
+    n := 1;
+  ST_RUN + ST_ERR, 2 * ST_RUN:
+    n := 2;
+  (ST_ERR - 10) .. ST_ERR + ST_RUN - 1:
+    n := 3;
+ELSE
+    n := 0;
+END_CASE;
+END_PROGRAM
+";
+    let (trace, _) = run_text("labels.st", src, 12, "Main.n");
+    assert_eq!(
+        column(&trace, "Main.n"),
+        [1.0, 2.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 3.0, 3.0, 2.0, 0.0],
+        "{trace}"
+    );
+}
+
+/// CHAR literals as CASE labels of a CHAR selector (`'0':`, `'a', 'A':`; edition 3 writes a CHAR
+/// literal `'0'`), as `CHAR#'0':` already was: a hex digit's value, 255 for another character.
+#[test]
+fn char_literals_are_case_labels_of_a_char_selector() {
+    let src = "FUNCTION HexVal : BYTE
+    VAR_INPUT c : CHAR; END_VAR
+    CASE c OF
+        '0':
+            HexVal := 0;
+            RETURN;
+        '1', '2':
+            HexVal := CHAR_TO_BYTE(c) - 48;
+            RETURN;
+        'a', 'A':
+            HexVal := 10;
+    ELSE
+        HexVal := 255;
+    END_CASE;
+END_FUNCTION
+
+PROGRAM Main
+    VAR a, b, c, d : BYTE; END_VAR
+    a := HexVal('A');
+    b := HexVal('0');
+    c := HexVal('2');
+    d := HexVal('x');
+END_PROGRAM
+";
+    let (trace, _) = run_text("hex.st", src, 1, "Main.a,Main.b,Main.c,Main.d");
+    assert_eq!(column(&trace, "Main.a"), [10.0], "{trace}");
+    assert_eq!(column(&trace, "Main.b"), [0.0]);
+    assert_eq!(column(&trace, "Main.c"), [2.0]);
+    assert_eq!(column(&trace, "Main.d"), [255.0]);
 }

@@ -1238,7 +1238,7 @@ impl<'d> PouLowering<'d> {
                 }
                 match label {
                     CaseLabel::Value(v) => {
-                        let Some(v) = self.case_value(v, hint, diags) else {
+                        let Some(v) = self.case_label(v, hint, out, diags) else {
                             continue;
                         };
                         out.push(ld(sel.clone(), v.span()));
@@ -1246,8 +1246,8 @@ impl<'d> PouLowering<'d> {
                     }
                     CaseLabel::Range(lo, hi) => {
                         let (Some(lo), Some(hi)) = (
-                            self.case_value(lo, hint, diags),
-                            self.case_value(hi, hint, diags),
+                            self.case_label(lo, hint, out, diags),
+                            self.case_label(hi, hint, out, diags),
                         ) else {
                             continue;
                         };
@@ -1288,6 +1288,56 @@ impl<'d> PouLowering<'d> {
             self.stmt_list(body, out, diags);
         }
         out.push(IlStmt::Label(end));
+    }
+
+    /// A CASE label as compared: [`Self::case_value`], or a constant expression of named constants,
+    /// literals and arithmetic (`ST_RUN + ST_ERR:`; edition 3: Case_List_Elem is a Subrange or a
+    /// Constant_Expr; CODESYS documents it) computed into a temporary of the label's type before
+    /// the comparison (its names are checked by sema as any operand: a variable is accepted as
+    /// CODESYS accepts it only where constant; ladderc does not tell them apart here).
+    fn case_label(
+        &mut self,
+        e: &Expr,
+        hint: Option<&TypeRef>,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> Option<Operand> {
+        fn constant_shape(e: &Expr) -> bool {
+            match &e.kind {
+                ExprKind::Literal(_) | ExprKind::EnumValue { .. } => true,
+                ExprKind::Place(p) => {
+                    matches!(p.base, PlaceBase::Name(_))
+                        && p.accessors.iter().all(|a| matches!(a, Accessor::Field(_)))
+                }
+                ExprKind::Unary { op, operand } => {
+                    matches!(op, UnaryOp::Neg | UnaryOp::Plus) && constant_shape(operand)
+                }
+                ExprKind::Binary { op, left, right } => {
+                    matches!(
+                        op,
+                        BinaryOp::Add
+                            | BinaryOp::Sub
+                            | BinaryOp::Mul
+                            | BinaryOp::Div
+                            | BinaryOp::Mod
+                    ) && constant_shape(left)
+                        && constant_shape(right)
+                }
+                _ => false,
+            }
+        }
+        if matches!(e.kind, ExprKind::Binary { .. } | ExprKind::Unary { .. })
+            && constant_shape(e)
+            && self.enum_by_context(e, hint).is_none()
+            && self.pure_operand(e).is_none()
+        {
+            let ty = self.temp_type(e, hint);
+            self.value(e, out, diags);
+            let t = self.temp(ty, e.span);
+            out.push(simple(Op::St, false, Some(var_operand(&t)), e.span));
+            return Some(var_operand(&t));
+        }
+        self.case_value(e, hint, diags)
     }
 
     /// A CASE label: a literal, an enumerated value or a constant (a plain operand); `hint` is the
