@@ -13,7 +13,11 @@
 //! - constant expressions inside structure initial values, also inside array initial values
 //!   (`(dX := len / 2.0, dY := -len)`; before: E0011);
 //! - a constant expression as a CASE label (`ST_RUN + ST_ERR:`, also in a range; before: E0106)
-//!   and a CHAR literal label on a CHAR selector (`'0':`; before: two E0100 per branch).
+//!   and a CHAR literal label on a CHAR selector (`'0':`; before: two E0100 per branch);
+//! - an array bound named by an enumerated value, `ARRAY[0..Limits#BUF_UPPER]` (before: E0011 and
+//!   a cascading E1070);
+//! - a misplaced `ARRAY [*]` (a FUNCTION's VAR_INPUT) is one E1072 (before: also one E1017 per
+//!   LOWER_BOUND/UPPER_BOUND of it, naming an internal value, `literal -1701...728`).
 
 mod common;
 use common::{check_text, column, run_text, run_traced_files};
@@ -383,4 +387,63 @@ END_PROGRAM
     assert_eq!(column(&trace, "Main.b"), [0.0]);
     assert_eq!(column(&trace, "Main.c"), [2.0]);
     assert_eq!(column(&trace, "Main.d"), [255.0]);
+}
+
+/// `ARRAY[0..Limits#BUF_UPPER]` with `Limits` an INT-based enumeration (IEC 61131-3 ed. 3,
+/// 6.4.4.3: named values are constants): the array has 8 elements, UPPER_BOUND is 7 and the last
+/// element is written.
+#[test]
+fn an_array_bound_may_be_an_enumerated_value() {
+    let src = "TYPE
+    Limits : INT (
+        BUF_UPPER := 7,
+        MODES_UPPER := 3
+    );
+END_TYPE
+PROGRAM Main
+    VAR
+        buf : ARRAY[0..Limits#BUF_UPPER] OF INT;
+        modes : ARRAY[1..Limits#MODES_UPPER + 1] OF BOOL;
+        n, m : DINT;
+    END_VAR
+    buf[7] := 5;
+    n := UPPER_BOUND(buf, 1);
+    m := UPPER_BOUND(modes, 1);
+END_PROGRAM
+";
+    let (trace, _) = run_text("limits.st", src, 1, "Main.n,Main.m,Main.buf[7]");
+    assert_eq!(column(&trace, "Main.n"), [7.0], "{trace}");
+    assert_eq!(column(&trace, "Main.m"), [4.0]);
+    assert_eq!(column(&trace, "Main.buf[7]"), [5.0]);
+}
+
+/// `ARRAY [*]` as a FUNCTION's VAR_INPUT (ladderc compiles it as a VAR_IN_OUT only) is one E1072
+/// at the `*`; its LOWER_BOUND and UPPER_BOUND say nothing more (no internal value in a message).
+#[test]
+fn a_misplaced_variable_length_array_is_one_error() {
+    let src = "FUNCTION SumAll : DINT
+    VAR_INPUT
+        values : ARRAY[*] OF DINT;
+    END_VAR
+    VAR lo, hi, i : DINT; END_VAR
+    lo := LOWER_BOUND(values, 1);
+    hi := UPPER_BOUND(values, 1);
+    FOR i := lo TO hi DO
+        SumAll := SumAll + values[i];
+    END_FOR;
+END_FUNCTION
+
+PROGRAM Main
+    VAR a : ARRAY[1..3] OF DINT := [1, 2, 3]; s : DINT; END_VAR
+    s := SumAll(a);
+END_PROGRAM
+";
+    let (code, lines) = check_text("vla.st", src);
+    assert_eq!(code, Some(1));
+    let errors: Vec<_> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].starts_with("vla.st:3:24: error[E1072]"),
+        "{lines:?}"
+    );
 }

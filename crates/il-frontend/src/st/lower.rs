@@ -2441,6 +2441,12 @@ impl<'d> PouLowering<'d> {
                         {
                             if *k >= 1 && *k <= dims.len() as i128 {
                                 let d = &dims[(*k - 1) as usize];
+                                if d.is_variable() {
+                                    // a misplaced `ARRAY [*]` (sema's E1072): its bounds are
+                                    // no number, and nothing more is said here
+                                    self.poisoned = true;
+                                    return int_lit(0, span);
+                                }
                                 return Operand::literal(Literal {
                                     kind: LiteralKind::Int(if upper { d.upper } else { d.lower }),
                                     type_prefix: Some(Ident::new("DINT", span)),
