@@ -16,6 +16,8 @@
 //!   and a CHAR literal label on a CHAR selector (`'0':`; before: two E0100 per branch);
 //! - an array bound named by an enumerated value, `ARRAY[0..Limits#BUF_UPPER]` (before: E0011 and
 //!   a cascading E1070);
+//! - a bound naming a constant of a list that is not given (`RobotLibParams.TOOL_MAX`) is one E0022
+//!   naming the constant as written and its list (before: `TOOL_MAX` alone);
 //! - a misplaced `ARRAY [*]` (a FUNCTION's VAR_INPUT) is one E1072 (before: also one E1017 per
 //!   LOWER_BOUND/UPPER_BOUND of it, naming an internal value, `literal -1701...728`).
 
@@ -444,6 +446,29 @@ END_PROGRAM
     assert_eq!(errors.len(), 1, "{lines:?}");
     assert!(
         errors[0].starts_with("vla.st:3:24: error[E1072]"),
+        "{lines:?}"
+    );
+}
+
+/// `ARRAY[0..RobotLibParams.TOOL_MAX - 1]` with no list `RobotLibParams` given (a library's
+/// parameter list): one E0022 that names the constant as written and the list.
+#[test]
+fn a_bound_from_a_list_not_given_names_the_list() {
+    let src = "TYPE Tool : STRUCT id : INT; END_STRUCT; END_TYPE
+VAR_GLOBAL
+  tools : ARRAY[0..RobotLibParams.TOOL_MAX - 1] OF Tool;
+END_VAR
+";
+    let (code, lines) = check_text("robot.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with(
+            "robot.st:3:35: error[E0022]: constant expression `RobotLibParams.TOOL_MAX - 1`: \
+             `RobotLibParams.TOOL_MAX` is not an integer constant declared before: no global \
+             variable list or library parameter list `RobotLibParams` given with the file declares \
+             `TOOL_MAX`"
+        ),
         "{lines:?}"
     );
 }
