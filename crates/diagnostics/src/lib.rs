@@ -103,6 +103,12 @@ impl Diagnostics {
     pub fn retain(&mut self, keep: impl FnMut(&Diagnostic) -> bool) {
         self.list.retain(keep);
     }
+    /// The diagnostics reported from the `from`-th on, to be completed where an earlier stage knows
+    /// more than the one that reported them (a qualifier the parser did not see).
+    pub fn since_mut(&mut self, from: usize) -> &mut [Diagnostic] {
+        let from = from.min(self.list.len());
+        &mut self.list[from..]
+    }
     /// How many there are.
     pub fn len(&self) -> usize {
         self.list.len()

@@ -579,6 +579,7 @@ fn method_arguments(action: &Action, args: &mut CallArgs, called: &VarRef) {
                         of: None,
                         span,
                         call_scoped: false,
+                        address_of: false,
                     })),
                     span,
                 });

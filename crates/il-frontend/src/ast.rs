@@ -661,6 +661,10 @@ pub struct RefOperand {
     /// a variable that lives for one call (a FUNCTION's, a VAR_TEMP, a method's VAR, a VAR_IN_OUT).
     #[serde(skip)]
     pub call_scoped: bool,
+    /// Written `ADR(x)` (CODESYS, TwinCAT), not `REF(x)`: it may take the address of a
+    /// FUNCTION's variable, valid during the call (`sema::refs`).
+    #[serde(skip)]
+    pub address_of: bool,
 }
 
 /// An enumerated value written with its type, `Color#red`: the payload of [`Operand::EnumValue`].

@@ -151,7 +151,7 @@ fn eval_at(e: &BoundExpr, consts: &Known, depth: u32) -> Result<ConstNum, String
         BoundExpr::Name(n) => match consts.consts.get(&n.name.to_ascii_uppercase()).or_else(|| {
             consts
                 .consts
-                .get(&enum_key(&n.name))
+                .get(&enum_key(&n.name.replacen('#', ".", 1)))
                 .filter(|_| consts.integers)
         }) {
             Some(v) if !consts.integers || matches!(v, ConstNum::Int(_)) => Ok(*v),

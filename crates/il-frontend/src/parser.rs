@@ -964,6 +964,7 @@ impl<'s> Ctx<'s> {
             of: Some(of),
             span,
             call_scoped: false,
+            address_of: false,
         })));
         (name, value)
     }

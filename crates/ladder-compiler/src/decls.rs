@@ -342,6 +342,7 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
                         of: Some(of),
                         span,
                         call_scoped: false,
+                        address_of: false,
                     }),
                 )));
             }

@@ -640,7 +640,7 @@ impl<'a> Gen<'a> {
             "SUB" if matches!(aty, Type::Ref(_)) && matches!(vty, Type::Ref(_)) => {
                 // `p - q`: the distance in bytes of the addresses they stand for
                 Some(crate::cat(&[
-                    "((IEC_LINT)(ladderc_ref_addr(",
+                    "((IEC_DWORD)(ladderc_ref_addr(",
                     a,
                     ") - ladderc_ref_addr(",
                     v,

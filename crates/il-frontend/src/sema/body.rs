@@ -171,6 +171,9 @@ pub(super) struct Body<'a, 'd> {
     /// live for one call (a VAR_IN_OUT, a temporary: `crate::st::refs::REF_ASSIGN_CALL`), by
     /// upper-case name: no reference may be kept through them (E0305).
     pub(super) scoped_refs: std::collections::HashSet<String>,
+    /// `ADR(v)` of a FUNCTION's own variable in the operand the last `LD` read (`sema::refs`):
+    /// its `ST` into anything but a variable of the function is W1444.
+    pub(super) call_address: Option<crate::Span>,
 }
 
 impl Analyzer<'_> {
@@ -194,6 +197,7 @@ impl Analyzer<'_> {
             result_written: false,
             typed_generic: None,
             scoped_refs: Default::default(),
+            call_address: None,
         };
         b.scope_reference_inputs(&pou.body);
         // Pass 1, silent: what the backward jumps bring. Without backward jumps it would find nothing
@@ -799,6 +803,7 @@ impl Body<'_, '_> {
                     self.load(st, Ty::ERROR, span);
                     return;
                 };
+                self.call_address = None;
                 let t = self.read_operand(o);
                 if negate {
                     self.check_class_bit(&t, o.span(), "LDN");
@@ -826,6 +831,9 @@ impl Body<'_, '_> {
                     self.check_class_bit(&cr, span, "STN");
                 }
                 let mut place = self.write_place(o, "ST");
+                if let Some(at) = self.call_address {
+                    self.call_address_stored(at, o);
+                }
                 if place.is_fb() {
                     if matches!(&cr, Ty::Known(c) if *c == place) {
                         self.instance_copied(o.span());

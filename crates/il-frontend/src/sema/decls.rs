@@ -152,6 +152,10 @@ impl Analyzer<'_> {
         for id in ids {
             self.resolve_user_type(id);
         }
+        // `Magic : BYTE := C_MAGIC;` in a STRUCT: IEC 61131-3 ed. 3 takes a constant expression
+        // (named constants included) as a field's initial value, and CODESYS/TwinCAT take a
+        // VAR_GLOBAL CONSTANT declared anywhere in the project
+        let field_consts = self.early_global_consts(units);
         for d in struct_declaration_order(units) {
             let ast::TypeDef::Struct { fields } = &d.def else {
                 continue;
@@ -172,7 +176,7 @@ impl Analyzer<'_> {
                 span: d.span,
             }];
             self.declaring_fields = true;
-            let vars = self.declare_vars(&blocks, &Consts::new(), None);
+            let vars = self.declare_vars(&blocks, &field_consts, None);
             self.declaring_fields = false;
             if d.union {
                 self.check_union_members(&d.name.name, &vars);
@@ -358,6 +362,62 @@ impl Analyzer<'_> {
             }
         }
         pous
+    }
+
+    /// The scalar (elementary, string, enumerated) constants of the project's VAR_GLOBAL CONSTANT
+    /// blocks, top-level and of configurations, evaluated silently before the structures are
+    /// declared, for the initial values of structure fields (`Magic : BYTE := C_MAGIC;`). A
+    /// constant may use one declared after it (a second round); their errors are reported when
+    /// the globals are declared.
+    fn early_global_consts(&mut self, units: &[CompilationUnit]) -> Consts {
+        let blocks: Vec<&VarBlock> = units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .flat_map(|item| match item {
+                LibraryElement::GlobalVars(b) => vec![b],
+                LibraryElement::Configuration(c) => c
+                    .globals
+                    .iter()
+                    .chain(c.resources.iter().flat_map(|r| r.globals.iter()))
+                    .collect(),
+                _ => Vec::new(),
+            })
+            .filter(|b| b.constant)
+            .collect();
+        let mut consts = Consts::new();
+        if blocks.is_empty() {
+            return consts;
+        }
+        let silent = std::mem::replace(&mut self.silent, true);
+        for _round in 0..2 {
+            for b in &blocks {
+                for d in &b.vars {
+                    let key = d.name.key();
+                    if consts.contains_key(&key) {
+                        continue;
+                    }
+                    let (
+                        Some(init @ ast::Initializer::Value(_)),
+                        TypeRef::Named(_) | TypeRef::String { .. },
+                    ) = (&d.init, &d.ty)
+                    else {
+                        continue;
+                    };
+                    let ty = self.resolve_type(&d.ty);
+                    if !matches!(
+                        ty,
+                        Type::Elementary(_) | Type::String { .. } | Type::Enum(_)
+                    ) {
+                        continue;
+                    }
+                    if let Some(v) = self.const_init(init, &ty, &consts) {
+                        consts.insert(key, (ty, v));
+                    }
+                }
+            }
+        }
+        self.silent = silent;
+        consts
     }
 
     /// Adds a global to the named list `list` (a CODESYS GVL), creating the list on first use.

@@ -81,7 +81,7 @@ impl Body<'_, '_> {
 
     /// `p + n` / `p - n` (CODESYS, TwinCAT pointer arithmetic: `n` counts bytes): a reference of
     /// `p`'s type, when the first input is a reference and the second an integer; `p - q` of two
-    /// references: their distance in bytes, an LINT; `None` when the call is not that. The moved pointer is checked when it is dereferenced (c-backend refs.rs).
+    /// references: their distance in bytes, a DWORD (CODESYS); `None` when the call is not that. The moved pointer is checked when it is dereferenced (c-backend refs.rs).
     pub(super) fn pointer_step(
         &mut self,
         f: &StdFunction,
@@ -97,16 +97,31 @@ impl Body<'_, '_> {
             return None;
         }
         let ok = match self.norm(&args[1].0) {
-            // `p - q`: the bytes from q to p (an LINT), meaningful for two pointers into one
-            // variable
+            // `p - q`: the bytes from q to p, meaningful for two pointers into one variable; a
+            // DWORD, as CODESYS documents ("the result of the difference between two pointers is
+            // of type DWORD, even on 64-bit platforms")
             Ty::Known(Type::Ref(_)) if f.name == "SUB" => {
                 return Some(super::calls::Inst {
                     name: f.name,
                     t: Ty::Known(p),
-                    result: Ty::Known(Type::Elementary(Elementary::Lint)),
+                    result: Ty::Known(Type::Elementary(Elementary::Dword)),
                 });
             }
-            Ty::Known(t) => t.is_error() || t.is_integer(),
+            // a byte count: an integer, or a bit string (CODESYS: `p + DWORD#1`; an address
+            // is a DWORD in CODESYS V2.3, an __XWORD in V3)
+            Ty::Known(t) => {
+                t.is_error()
+                    || t.is_integer()
+                    || matches!(
+                        t.elementary(),
+                        Some(
+                            Elementary::Byte
+                                | Elementary::Word
+                                | Elementary::Dword
+                                | Elementary::Lword
+                        )
+                    )
+            }
             Ty::Lit(v) => self
                 .lits
                 .bind(v, &Type::Elementary(Elementary::Lint))
@@ -185,6 +200,13 @@ impl Body<'_, '_> {
                 .label("a reference kept through it")
                 .hint(format!("`{input}` is given a VAR_IN_OUT (or a temporary) of a calling method and is read during the call only: pass it on to a method of the block, or copy the value"));
             return Ty::ERROR;
+        }
+        if r.address_of && self.function_variable(v) {
+            // `ADR(v)` of a FUNCTION's input or local (CODESYS, TwinCAT): the address is valid
+            // during the call (the variable is an automatic variable of the C function); IEC
+            // 61131-3's REF() refuses it, CODESYS only warns against letting it out of the call
+            self.call_address = Some(r.span);
+            return Ty::Known(Type::Ref(Box::new(place.ty)));
         }
         if let Some(why) = self.not_referable(v, r.call_scoped) {
             let path = crate::print::var_ref_text(v);
@@ -295,6 +317,46 @@ impl Body<'_, '_> {
     /// Why the address of `v` may not be taken (`None`: it may). A `call_scoped` reference
     /// (read during one call only, see [`RefOperand::call_scoped`]) may refer to what lives for
     /// one call.
+    /// Whether `v` is a variable (an element, a field) of the FUNCTION being checked, neither
+    /// located nor reached through a reference, nor a bit of one.
+    fn function_variable(&self, v: &ast::VarRef) -> bool {
+        let pou = self.pou();
+        pou.kind == PouKind::Function
+            && through_reference_or_part(v).is_none()
+            && pou
+                .var_position(&v.base.name)
+                .is_some_and(|i| pou.vars[i].location.is_none())
+    }
+
+    /// W1444: `ADR(v)` of a FUNCTION's variable (at `at`) stored by `ST o` into something that
+    /// outlives the call: anything but a plain VAR / VAR_TEMP of the function.
+    pub(super) fn call_address_stored(&mut self, at: crate::Span, o: &ast::Operand) {
+        self.call_address = None;
+        let pou = self.pou();
+        let local = matches!(o, ast::Operand::Var(x)
+        if pou.var_position(&x.base.name).is_some_and(|i| {
+            matches!(pou.vars[i].kind, VarKind::Local | VarKind::Temp)
+                && !x.accessors.iter().any(|a| matches!(a, Accessor::Deref(_)))
+        }));
+        if local {
+            return;
+        }
+        let target = match o {
+            ast::Operand::Var(x) => crate::print::var_ref_text(x),
+            other => format!("{other:?}"),
+        };
+        let name = pou.name.clone();
+        self.a
+            .warning(
+                code::W1444,
+                o.span(),
+                format!("`{target}` keeps the address of a variable of FUNCTION `{name}`, which lives for one call"),
+            )
+            .label("the pointer leaves the call here")
+            .also(at, "the address of the function's variable")
+            .hint("use the pointer inside the call only; copy the value, or point to a variable of a program, a block instance or a global list");
+    }
+
     fn not_referable(&self, v: &ast::VarRef, call_scoped: bool) -> Option<&'static str> {
         if let Some(why) = through_reference_or_part(v) {
             return why;

@@ -1504,6 +1504,26 @@ pub fn parse_text(
     lang: Lang,
     diags: &mut Diagnostics,
 ) -> (CompilationUnit, Vec<PendingBody>, Vec<ConfigEntry>) {
+    let before = diags.len();
+    let out = parse_text_as_read(file, src, implicit_name, lang, diags);
+    // `ARRAY[0..RobotLibParams.TOOL_MAX - 1]`: the bound's qualifier was blanked (`list_bounds`)
+    // before the constant was looked for; E0022 names it as written, and the list
+    for d in diags.since_mut(before) {
+        if d.code == code::E0022 {
+            super::list_bounds::name_qualifier(d, src);
+        }
+    }
+    out
+}
+
+/// [`parse_text`], its E0022 naming constants without their list's qualifier.
+fn parse_text_as_read(
+    file: FileId,
+    src: &str,
+    implicit_name: &str,
+    lang: Lang,
+    diags: &mut Diagnostics,
+) -> (CompilationUnit, Vec<PendingBody>, Vec<ConfigEntry>) {
     let mut pending = Vec::new();
     let mut decl_args = Vec::new();
     let mut first_try = None;

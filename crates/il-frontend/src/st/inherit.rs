@@ -471,6 +471,7 @@ fn pass_by_reference(p: &mut crate::ast::Pou, by_reference: &HashMap<String, Vec
                     of: Some(v.clone()),
                     span,
                     call_scoped: false,
+                    address_of: false,
                 }));
             }
         }

@@ -118,3 +118,53 @@ fn initial_value_qualifiers(src: &str, toks: &[Token], blanks: &mut Vec<std::ops
         k += 1;
     }
 }
+
+/// E0022 `d` about a constant `X` (``constant expression `X - 1`: `X` is not an integer constant
+/// declared before``) whose list qualifier was blanked: the constant named as written in `src`
+/// (`RobotLibParams.TOOL_MAX`), and the list that is not given.
+pub(super) fn name_qualifier(d: &mut diagnostics::Diagnostic, src: &str) {
+    let Some(span) = d.span else {
+        return;
+    };
+    let marker = "` is not ";
+    let Some(end) = d.message.find(marker) else {
+        return;
+    };
+    let Some(open) = d.message[..end].rfind('`') else {
+        return;
+    };
+    let name = d.message[open + 1..end].to_string();
+    if name.contains(['.', '#']) {
+        return;
+    }
+    let (lo, hi) = (span.start as usize, (span.end as usize).min(src.len()));
+    let Some(region) = src.get(lo.saturating_sub(128)..hi) else {
+        return;
+    };
+    let ident = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    let dotted = format!(".{name}");
+    let found = region.match_indices(&dotted).find_map(|(k, _)| {
+        let after = region[k + dotted.len()..].chars().next();
+        if after.is_some_and(ident) {
+            return None;
+        }
+        let start = region[..k].rfind(|c: char| !ident(c)).map_or(0, |i| i + 1);
+        let list = &region[start..k];
+        (!list.is_empty()).then(|| list.to_string())
+    });
+    let Some(list) = found else {
+        return;
+    };
+    let qualified = format!("{list}.{name}");
+    d.message = d.message.replacen(
+        &format!("`{name}` is not an integer constant declared before"),
+        &format!("`{qualified}` is not an integer constant declared before: no global variable list or library parameter list `{list}` given with the file declares `{name}`"),
+        1,
+    );
+    if let Some(expr_open) = d.message.find("constant expression `") {
+        let at = expr_open + "constant expression `".len();
+        if d.message[at..].starts_with(name.as_str()) {
+            d.message.insert_str(at, &format!("{list}."));
+        }
+    }
+}

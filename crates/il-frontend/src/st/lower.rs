@@ -559,6 +559,7 @@ impl<'d> PouLowering<'d> {
                     of: None,
                     span,
                     call_scoped: false,
+                    address_of: false,
                 })),
                 span,
             ));
@@ -1237,7 +1238,7 @@ impl<'d> PouLowering<'d> {
                 }
                 match label {
                     CaseLabel::Value(v) => {
-                        let Some(v) = self.case_value(v, hint, diags) else {
+                        let Some(v) = self.case_label(v, hint, out, diags) else {
                             continue;
                         };
                         out.push(ld(sel.clone(), v.span()));
@@ -1245,8 +1246,8 @@ impl<'d> PouLowering<'d> {
                     }
                     CaseLabel::Range(lo, hi) => {
                         let (Some(lo), Some(hi)) = (
-                            self.case_value(lo, hint, diags),
-                            self.case_value(hi, hint, diags),
+                            self.case_label(lo, hint, out, diags),
+                            self.case_label(hi, hint, out, diags),
                         ) else {
                             continue;
                         };
@@ -1287,6 +1288,56 @@ impl<'d> PouLowering<'d> {
             self.stmt_list(body, out, diags);
         }
         out.push(IlStmt::Label(end));
+    }
+
+    /// A CASE label as compared: [`Self::case_value`], or a constant expression of named constants,
+    /// literals and arithmetic (`ST_RUN + ST_ERR:`; edition 3: Case_List_Elem is a Subrange or a
+    /// Constant_Expr; CODESYS documents it) computed into a temporary of the label's type before
+    /// the comparison (its names are checked by sema as any operand: a variable is accepted as
+    /// CODESYS accepts it only where constant; ladderc does not tell them apart here).
+    fn case_label(
+        &mut self,
+        e: &Expr,
+        hint: Option<&TypeRef>,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) -> Option<Operand> {
+        fn constant_shape(e: &Expr) -> bool {
+            match &e.kind {
+                ExprKind::Literal(_) | ExprKind::EnumValue { .. } => true,
+                ExprKind::Place(p) => {
+                    matches!(p.base, PlaceBase::Name(_))
+                        && p.accessors.iter().all(|a| matches!(a, Accessor::Field(_)))
+                }
+                ExprKind::Unary { op, operand } => {
+                    matches!(op, UnaryOp::Neg | UnaryOp::Plus) && constant_shape(operand)
+                }
+                ExprKind::Binary { op, left, right } => {
+                    matches!(
+                        op,
+                        BinaryOp::Add
+                            | BinaryOp::Sub
+                            | BinaryOp::Mul
+                            | BinaryOp::Div
+                            | BinaryOp::Mod
+                    ) && constant_shape(left)
+                        && constant_shape(right)
+                }
+                _ => false,
+            }
+        }
+        if matches!(e.kind, ExprKind::Binary { .. } | ExprKind::Unary { .. })
+            && constant_shape(e)
+            && self.enum_by_context(e, hint).is_none()
+            && self.pure_operand(e).is_none()
+        {
+            let ty = self.temp_type(e, hint);
+            self.value(e, out, diags);
+            let t = self.temp(ty, e.span);
+            out.push(simple(Op::St, false, Some(var_operand(&t)), e.span));
+            return Some(var_operand(&t));
+        }
+        self.case_value(e, hint, diags)
     }
 
     /// A CASE label: a literal, an enumerated value or a constant (a plain operand); `hint` is the
@@ -1882,6 +1933,7 @@ impl<'d> PouLowering<'d> {
                             of: None,
                             span: e.span,
                             call_scoped: false,
+                            address_of: false,
                         })));
                     }
                     [Arg {
@@ -1904,6 +1956,7 @@ impl<'d> PouLowering<'d> {
                             of: Some(of),
                             span: e.span,
                             call_scoped: false,
+                            address_of: false,
                         })));
                     }
                     [Arg {
@@ -1930,6 +1983,7 @@ impl<'d> PouLowering<'d> {
                             of: None,
                             span: e.span,
                             call_scoped: false,
+                            address_of: false,
                         })));
                     }
                     _ => {
@@ -1947,6 +2001,7 @@ impl<'d> PouLowering<'d> {
                             of: None,
                             span: e.span,
                             call_scoped: false,
+                            address_of: false,
                         })));
                     }
                 }
@@ -1964,6 +2019,7 @@ impl<'d> PouLowering<'d> {
                     of: None,
                     span: e.span,
                     call_scoped: false,
+                    address_of: false,
                 })));
             }
             (
@@ -1985,6 +2041,7 @@ impl<'d> PouLowering<'d> {
                 of: Some(v),
                 span: e.span,
                 call_scoped,
+                address_of: matches!(&e.kind, ExprKind::Call { name, .. } if name.is("ADR")),
             }))),
             other => {
                 diags.push(
@@ -2028,6 +2085,7 @@ impl<'d> PouLowering<'d> {
                 of: None,
                 span: p.span,
                 call_scoped: false,
+                address_of: false,
             })));
         }
         let mut accessors = Vec::new();
@@ -2391,6 +2449,12 @@ impl<'d> PouLowering<'d> {
                         {
                             if *k >= 1 && *k <= dims.len() as i128 {
                                 let d = &dims[(*k - 1) as usize];
+                                if d.is_variable() {
+                                    // a misplaced `ARRAY [*]` (sema's E1072): its bounds are
+                                    // no number, and nothing more is said here
+                                    self.poisoned = true;
+                                    return int_lit(0, span);
+                                }
                                 return Operand::literal(Literal {
                                     kind: LiteralKind::Int(if upper { d.upper } else { d.lower }),
                                     type_prefix: Some(Ident::new("DINT", span)),
@@ -2776,6 +2840,7 @@ impl<'d> PouLowering<'d> {
                     of: None,
                     span,
                     call_scoped: false,
+                    address_of: false,
                 }));
                 out.push(simple(Op::Ne, false, Some(null), span));
             }

@@ -621,14 +621,44 @@ impl<'s, 'd> Parser<'s, 'd> {
         match self.peek_at(i) {
             Tok::Int(_) | Tok::Kw(Kw::True | Kw::False) => return true,
             Tok::TypePrefix => return true,
+            // `'0':` on a CHAR selector (edition 3: a CHAR literal is written `'0'`)
+            Tok::Str(..) => {
+                return matches!(self.peek_at(i + 1), Tok::Colon | Tok::Comma | Tok::DotDot)
+            }
             Tok::Ident => {}
+            Tok::LParen => return self.constant_expression_label_at(i),
             _ => return false,
         }
+        let first = i;
         i += 1;
         while *self.peek_at(i) == Tok::Dot && *self.peek_at(i + 1) == Tok::Ident {
             i += 2;
         }
         matches!(self.peek_at(i), Tok::Colon | Tok::Comma | Tok::DotDot)
+            || self.constant_expression_label_at(first)
+    }
+
+    /// Whether the tokens from `from` are a constant expression ending at a CASE label's `:`
+    /// (`ST_RUN + ST_ERR:`, `(N * 2) + 1:`; edition 3: Case_List_Elem is a Subrange or a
+    /// Constant_Expr): names, numbers, arithmetic and parentheses only, then `:` before any `;`,
+    /// `:=` or keyword (a statement never holds a lone `:`).
+    fn constant_expression_label_at(&self, from: usize) -> bool {
+        let mut depth = 0usize;
+        let mut operator = false;
+        for i in from..from + 64 {
+            match self.peek_at(i) {
+                Tok::Ident | Tok::Int(_) | Tok::Real(_) | Tok::TypePrefix | Tok::Dot => {}
+                Tok::Plus | Tok::Minus | Tok::Star | Tok::Slash | Tok::Kw(Kw::Mod) => {
+                    operator = true
+                }
+                Tok::LParen => depth += 1,
+                Tok::RParen if depth > 0 => depth -= 1,
+                Tok::Comma | Tok::DotDot if depth == 0 => {}
+                Tok::Colon => return depth == 0 && operator,
+                _ => return false,
+            }
+        }
+        false
     }
 
     fn statement(&mut self) -> Option<Stmt> {

@@ -407,6 +407,7 @@ impl RefTypes {
                         of: Some(target.clone()),
                         span,
                         call_scoped: false,
+                        address_of: false,
                     }),
                 )));
             }
