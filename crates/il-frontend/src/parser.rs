@@ -1037,7 +1037,8 @@ impl<'s> Ctx<'s> {
                     accessors: Vec::new().into(),
                     span: of.span,
                 };
-                return self.address_array_element(of, l, r);
+                let address_of = callee.is("ADR");
+                return self.address_array_element(of, address_of, l, r);
             }
         }
         let count = match &e {
@@ -1066,14 +1067,21 @@ impl<'s> Ctx<'s> {
     }
 
     /// `ADR(of)` / `REF(of)` written at `l..r` as an element of an array's initial value: the
-    /// address of `of` (`sema::address_init` checks it).
-    pub fn address_array_element(&mut self, of: VarRef, l: usize, r: usize) -> ArrayInitElement {
+    /// address of `of` (`sema::address_init` checks it); `address_of` when written `ADR`.
+    pub fn address_array_element(
+        &mut self,
+        of: VarRef,
+        address_of: bool,
+        l: usize,
+        r: usize,
+    ) -> ArrayInitElement {
         ArrayInitElement {
             repeat: None,
             value: Initializer::Value(Operand::Ref(Box::new(crate::ast::RefOperand {
                 of: Some(of),
                 span: self.span(l, r),
                 call_scoped: false,
+                address_of,
             }))),
         }
     }
@@ -1098,7 +1106,8 @@ impl<'s> Ctx<'s> {
                 "an initial value is a constant, or `ADR(x)` / `REF(x)` of a variable of the POU; set this one in the body",
             );
         }
-        self.address_array_element(of, l, r)
+        let address_of = callee.is("ADR");
+        self.address_array_element(of, address_of, l, r)
     }
 
     /// `N(value)` in an array's initial value, `N` (at `l..r`) an integer constant declared
