@@ -3,10 +3,15 @@
 //! - the assignment attempt `r ?= e;` (IEC 61131-3 ed. 3, 6.6.6.7): an interface takes the
 //!   instance another interface (or an instance, or a method's interface result) holds when its
 //!   class implements it, else NULL; a `REF_TO C` takes it when it is a `C` or derives from it,
-//!   else NULL (before: E0101 at the `?`).
+//!   else NULL (before: E0101 at the `?`);
+//! - a METHOD (or action) that no POU calls is checked as when it is called, also in a library of
+//!   classes without a program (before: `check` said clean, exit 0, with an unknown function and an
+//!   undeclared variable in it), each error once when it is also called inside its block;
+//! - a member inherited from a base declared in another file (`_abs.CountForward()` in a CLASS or
+//!   FUNCTION_BLOCK that EXTENDS it) is the base's variable (before: E1032, a library qualifier).
 
 mod common;
-use common::{check_text, column, run_text};
+use common::{check_text, column, in_dir, run_text, write_in};
 
 const SHAPES: &str = "INTERFACE IShape
     METHOD Area : INT END_METHOD
@@ -130,4 +135,143 @@ END_PROGRAM
         lines[0].contains("attempt_bad.st:32:5") && lines[0].contains("E1083"),
         "{lines:?}"
     );
+}
+
+/// A library of one class whose method nothing calls: its unknown function and undeclared
+/// variable are the errors a call would give, one each.
+#[test]
+fn a_method_nothing_calls_is_checked() {
+    let src = "CLASS Hasher
+    VAR PUBLIC n : INT; END_VAR
+    METHOD PUBLIC Run
+        VAR_INPUT s : INT; END_VAR
+        n := NoSuchFunction(s);
+        n := undeclaredVar + 1;
+    END_METHOD
+END_CLASS
+";
+    let (code, lines) = check_text("hasher.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(
+        lines[0].contains("hasher.st:5:14") && lines[0].contains("E1019"),
+        "{lines:?}"
+    );
+    assert!(
+        lines[1].contains("hasher.st:6:14") && lines[1].contains("E1001"),
+        "{lines:?}"
+    );
+}
+
+/// A method called inside its own block only (inlined there) and an uncalled one next to it: the
+/// called one's error is reported once, the uncalled one's too; a clean uncalled method changes
+/// nothing of the run.
+#[test]
+fn an_uncalled_method_next_to_called_ones() {
+    let src = "FUNCTION_BLOCK FB_Count
+    VAR_OUTPUT n : INT; END_VAR
+    METHOD Inc
+        n := n + Missing;
+    END_METHOD
+    METHOD PUBLIC Spare
+        n := n + Absent(1);
+    END_METHOD
+    Inc();
+END_FUNCTION_BLOCK
+";
+    let (code, lines) = check_text("count.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("count.st:4:18") && l.contains("E1001")),
+        "{lines:?}"
+    );
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("count.st:7:18") && l.contains("E1019")),
+        "{lines:?}"
+    );
+    let ok = "FUNCTION_BLOCK FB_Count
+    VAR_OUTPUT n : INT; END_VAR
+    METHOD PUBLIC Spare
+        n := n + 100;
+    END_METHOD
+    n := n + 1;
+END_FUNCTION_BLOCK
+PROGRAM Main
+    VAR c : FB_Count; v : INT; END_VAR
+    c();
+    v := c.n;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("count_ok.st", ok, 3, "Main.v");
+    assert_eq!(column(&trace, "Main.v"), [1.0, 2.0, 3.0], "{stderr}");
+}
+
+/// `_enc.Forward()` in a method of a class extending a base of another file, which declares
+/// `_enc` PROTECTED: the base's instance counts (a CLASS, then the same as FUNCTION_BLOCKs).
+#[test]
+fn a_member_inherited_from_another_file_is_called() {
+    for (open, close) in [
+        ("CLASS", "END_CLASS"),
+        ("FUNCTION_BLOCK", "END_FUNCTION_BLOCK"),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        write_in(
+            dir.path(),
+            "Base.st",
+            &format!(
+                "{open} Tally
+    VAR _v : DINT; END_VAR
+    METHOD PUBLIC Forward
+        _v := _v + 2;
+    END_METHOD
+    METHOD PUBLIC Value : DINT
+        Value := _v;
+    END_METHOD
+{close}
+{open} Axis
+    VAR PROTECTED _enc : Tally; END_VAR
+    METHOD PUBLIC Pos : DINT
+        Pos := _enc.Value();
+    END_METHOD
+{close}
+"
+            ),
+        );
+        write_in(
+            dir.path(),
+            "Derived.st",
+            &format!(
+                "{open} LinearAxis EXTENDS Axis
+    METHOD PUBLIC Step
+        _enc.Forward();
+    END_METHOD
+{close}
+PROGRAM Main
+    VAR a : LinearAxis; p : DINT; END_VAR
+    a.Step();
+    p := a.Pos();
+END_PROGRAM
+"
+            ),
+        );
+        let (code, out, err) = in_dir(
+            dir.path(),
+            &[
+                "run",
+                "Base.st",
+                "Derived.st",
+                "--cycles",
+                "3",
+                "--watch",
+                "Main.p",
+            ],
+        );
+        assert_eq!(code, Some(0), "{open}: {err}");
+        assert_eq!(column(&out, "Main.p"), [2.0, 4.0, 6.0], "{open}: {err}");
+    }
 }

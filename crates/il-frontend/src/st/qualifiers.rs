@@ -306,12 +306,32 @@ pub(super) fn library_qualifiers(
     // the POU the token is in (`POU.VAR` among the other files' names: a variable its
     // declaration in another file gives it)
     let mut pou = String::new();
+    // the base it EXTENDS (`CLASS EncA EXTENDS BaseEnc`): `_abs.M()` in its methods names a
+    // variable the base declares, maybe in another file (`BASE.VAR` among the other files' names)
+    let mut base = String::new();
     for (k, t) in toks.iter().enumerate() {
         let w = word(src, t).to_ascii_uppercase();
-        if matches!(w.as_str(), "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK")
-            && toks.get(k + 1).is_some_and(ident)
+        if matches!(
+            w.as_str(),
+            "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" | "CLASS"
+        ) && toks.get(k + 1).is_some_and(ident)
         {
             pou = word(src, &toks[k + 1]).to_ascii_uppercase();
+            base.clear();
+            // `CLASS [FINAL|ABSTRACT] Name`: the name is the last word before EXTENDS
+            if let Some(e) = toks[k + 1..]
+                .iter()
+                .take(4)
+                .position(|x| is_word(src, x, "EXTENDS"))
+            {
+                let at = k + 1 + e;
+                if let Some(b) = toks.get(at + 1).filter(|b| ident(b)) {
+                    base = word(src, b).to_ascii_uppercase();
+                }
+                if let Some(n) = toks.get(at - 1).filter(|n| ident(n)) {
+                    pou = word(src, n).to_ascii_uppercase();
+                }
+            }
         }
         if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
             // a type is named after `:` in VAR blocks and in TYPE declarations (a STRUCT's
@@ -335,7 +355,9 @@ pub(super) fn library_qualifiers(
             || PROJECT_PROGRAMS.with(|p| p.borrow().contains(&w))
             || OTHER_FILES_NAMES.with(|o| {
                 let o = o.borrow();
-                o.contains(&w) || (!pou.is_empty() && o.contains(&format!("{pou}.{w}")))
+                o.contains(&w)
+                    || (!pou.is_empty() && o.contains(&format!("{pou}.{w}")))
+                    || (!base.is_empty() && o.contains(&format!("{base}.{w}")))
             })
         {
             continue;
