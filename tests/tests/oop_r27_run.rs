@@ -8,7 +8,9 @@
 //!   classes without a program (before: `check` said clean, exit 0, with an unknown function and an
 //!   undeclared variable in it), each error once when it is also called inside its block;
 //! - a member inherited from a base declared in another file (`_abs.CountForward()` in a CLASS or
-//!   FUNCTION_BLOCK that EXTENDS it) is the base's variable (before: E1032, a library qualifier).
+//!   FUNCTION_BLOCK that EXTENDS it) is the base's variable (before: E1032, a library qualifier);
+//! - two METHODs of one name in a class (SIMATIC AX's overloading, not IEC) are one E1084 at the
+//!   second (before: accepted there, then E1011/E1021/E0106 at the calls).
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -274,4 +276,48 @@ END_PROGRAM
         assert_eq!(code, Some(0), "{open}: {err}");
         assert_eq!(column(&out, "Main.p"), [2.0, 4.0, 6.0], "{open}: {err}");
     }
+}
+
+/// SIMATIC AX overloads `SetTD(s)` / `SetTD(s, k)` and `Bad(value)` / `Bad() : BOOL`: one E1084
+/// at each second declaration, nothing at the calls (the first is the one compiled).
+#[test]
+fn a_method_declared_twice_is_one_e1084() {
+    let src = "CLASS Sig
+    VAR _bad : BOOL; END_VAR
+    METHOD PROTECTED Bad
+        VAR_INPUT value : BOOL; END_VAR
+        _bad := value;
+    END_METHOD
+    METHOD PUBLIC Bad : BOOL
+        Bad := _bad;
+    END_METHOD
+    METHOD PUBLIC Update
+        VAR_INPUT ok : BOOL; END_VAR
+        THIS.Bad(value := NOT ok);
+    END_METHOD
+    METHOD PUBLIC SetTD
+        VAR_INPUT s : DINT; END_VAR
+    END_METHOD
+    METHOD PUBLIC SetTD
+        VAR_INPUT s : DINT; k : DINT; END_VAR
+    END_METHOD
+END_CLASS
+PROGRAM Main
+    VAR s : Sig; b : BOOL; END_VAR
+    s.Update(ok := FALSE);
+    b := s.Bad();
+    s.SetTD(s := 3, k := 5);
+END_PROGRAM
+";
+    let (code, lines) = check_text("overload.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(lines.len(), 2, "{lines:?}");
+    assert!(
+        lines[0].contains("overload.st:7:19") && lines[0].contains("E1084"),
+        "{lines:?}"
+    );
+    assert!(
+        lines[1].contains("overload.st:17:19") && lines[1].contains("E1084"),
+        "{lines:?}"
+    );
 }
