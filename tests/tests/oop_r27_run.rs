@@ -10,7 +10,10 @@
 //! - a member inherited from a base declared in another file (`_abs.CountForward()` in a CLASS or
 //!   FUNCTION_BLOCK that EXTENDS it) is the base's variable (before: E1032, a library qualifier);
 //! - two METHODs of one name in a class (SIMATIC AX's overloading, not IEC) are one E1084 at the
-//!   second (before: accepted there, then E1011/E1021/E0106 at the calls).
+//!   second (before: accepted there, then E1011/E1021/E0106 at the calls);
+//! - a method called inside its own class with positional arguments after its inputs binds its
+//!   outputs in order (`THIS.Bounds(a, b)`, IEC ed. 3 6.6.1.4.2; before: E1011, while the same
+//!   call from outside the class ran).
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -320,4 +323,39 @@ END_PROGRAM
         lines[1].contains("overload.st:17:19") && lines[1].contains("E1084"),
         "{lines:?}"
     );
+}
+
+/// `THIS.Bounds(a, b)` and `Scale(3, a)` inside the class: the positional arguments after the
+/// inputs receive the outputs in declaration order.
+#[test]
+fn positional_outputs_of_a_method_called_in_its_own_class() {
+    let src = "CLASS K
+    VAR PUBLIC r, s : INT; END_VAR
+    METHOD PRIVATE Bounds
+        VAR_OUTPUT lo : INT; hi : INT; END_VAR
+        lo := 1; hi := 9;
+    END_METHOD
+    METHOD PRIVATE Scale
+        VAR_INPUT k : INT; END_VAR
+        VAR_OUTPUT y : INT; END_VAR
+        y := k * 7;
+    END_METHOD
+    METHOD PUBLIC Run
+        VAR_TEMP a, b : INT; END_VAR
+        THIS.Bounds(a, b);
+        r := a * 100 + b;
+        Scale(3, a);
+        s := a;
+    END_METHOD
+END_CLASS
+PROGRAM Main
+    VAR k : K; r, s : INT; END_VAR
+    k.Run();
+    r := k.r;
+    s := k.s;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("bounds.st", src, 1, "Main.r,Main.s");
+    assert_eq!(column(&trace, "Main.r"), [109.0], "{stderr}");
+    assert_eq!(column(&trace, "Main.s"), [21.0], "{stderr}");
 }
