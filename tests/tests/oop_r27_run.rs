@@ -13,7 +13,9 @@
 //!   second (before: accepted there, then E1011/E1021/E0106 at the calls);
 //! - a method called inside its own class with positional arguments after its inputs binds its
 //!   outputs in order (`THIS.Bounds(a, b)`, IEC ed. 3 6.6.1.4.2; before: E1011, while the same
-//!   call from outside the class ran).
+//!   call from outside the class ran);
+//! - a nested namespace named relative to an enclosing one (`Types.BeltData` inside `NAMESPACE
+//!   Plant.Line` for `NAMESPACE Plant.Line.Types`, IEC ed. 3 6.9; before: E1032).
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -358,4 +360,25 @@ END_PROGRAM
     let (trace, stderr) = run_text("bounds.st", src, 1, "Main.r,Main.s");
     assert_eq!(column(&trace, "Main.r"), [109.0], "{stderr}");
     assert_eq!(column(&trace, "Main.s"), [21.0], "{stderr}");
+}
+
+/// `Types.Belt` inside `NAMESPACE Plant.Line` names the type of `NAMESPACE Plant.Line.Types`:
+/// its initial value is read.
+#[test]
+fn a_nested_namespace_named_relatively() {
+    let src = "NAMESPACE Plant.Line.Types
+    TYPE Belt : STRUCT
+        speed : REAL := 2.5;
+    END_STRUCT;
+    END_TYPE
+END_NAMESPACE
+NAMESPACE Plant.Line
+    PROGRAM Main
+        VAR d : Types.Belt; s : REAL; END_VAR
+        s := d.speed * 2.0;
+    END_PROGRAM
+END_NAMESPACE
+";
+    let (trace, stderr) = run_text("belt.st", src, 1, "Main.s");
+    assert_eq!(column(&trace, "Main.s"), [5.0], "{stderr}");
 }

@@ -309,8 +309,30 @@ pub(super) fn library_qualifiers(
     // the base it EXTENDS (`CLASS EncA EXTENDS BaseEnc`): `_abs.M()` in its methods names a
     // variable the base declares, maybe in another file (`BASE.VAR` among the other files' names)
     let mut base = String::new();
+    // the namespaces open at the token (upper case, dotted)
+    let mut open_ns: Vec<String> = Vec::new();
     for (k, t) in toks.iter().enumerate() {
         let w = word(src, t).to_ascii_uppercase();
+        if w == "NAMESPACE" && matches!(t.tok, Tok::Ident | Tok::Kw(_)) {
+            let mut parts = Vec::new();
+            let mut j = k + 1;
+            if toks.get(j).is_some_and(|x| is_word(src, x, "INTERNAL")) {
+                j += 1;
+            }
+            while let Some(x) = toks.get(j).filter(|x| ident(x)) {
+                parts.push(word(src, x).to_ascii_uppercase());
+                if toks.get(j + 1).is_some_and(|d| d.tok == Tok::Dot) {
+                    j += 2;
+                } else {
+                    break;
+                }
+            }
+            if !parts.is_empty() {
+                open_ns.push(parts.join("."));
+            }
+        } else if w == "END_NAMESPACE" {
+            open_ns.pop();
+        }
         if matches!(
             w.as_str(),
             "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" | "CLASS"
@@ -366,8 +388,21 @@ pub(super) fn library_qualifiers(
         if prev.is_some_and(|p| p.tok == Tok::Dot) {
             continue;
         }
-        // `Factory.Motion.Speed` of `NAMESPACE Factory.Motion`: the whole chain blanked
-        if let Some(end) = dotted.iter().find_map(|parts| {
+        // `Factory.Motion.Speed` of `NAMESPACE Factory.Motion`: the whole chain blanked; also
+        // named from inside an enclosing namespace (`Types.BeltData` in `NAMESPACE Plant.Line`
+        // for `NAMESPACE Plant.Line.Types`: IEC 61131-3 ed. 3, 6.9, names are looked up in the
+        // enclosing namespaces outward), the chain's tail after that namespace
+        let mut tails = dotted.iter().flat_map(|parts| {
+            (0..parts.len()).filter_map(|i| {
+                let head = parts[..i].join(".");
+                (i == 0
+                    || open_ns
+                        .iter()
+                        .any(|o| o == &head || o.starts_with(&format!("{head}."))))
+                .then(|| &parts[i..])
+            })
+        });
+        if let Some(end) = tails.find_map(|parts| {
             let matches = parts.iter().enumerate().all(|(n, part)| {
                 toks.get(k + 2 * n)
                     .is_some_and(|t| ident(t) && word(src, t).eq_ignore_ascii_case(part))
