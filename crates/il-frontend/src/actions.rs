@@ -37,9 +37,17 @@ pub const FLAG_PREFIX: &str = "__ACTION_";
 /// The label that starts an action's statements in its POU's body.
 const LABEL_PREFIX: &str = "__ACT_";
 
+/// The actions [`link`] read, and which it linked (POU and action, upper-case): what
+/// [`with_uncalled`] needs to check those nothing calls.
+#[derive(Debug, Default)]
+pub struct Linked {
+    actions: HashMap<String, Vec<Action>>,
+    linked: Vec<(String, String)>,
+}
+
 /// Links the calls of actions from other POUs and drops every [`LibraryElement::Action`] of
-/// `units` (see the module documentation).
-pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
+/// `units` (see the module documentation); returns what it read for [`with_uncalled`].
+pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) -> Linked {
     let mut actions: HashMap<String, Vec<Action>> = HashMap::new();
     for u in units.iter_mut() {
         if !u
@@ -56,9 +64,24 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             }
         }
     }
-    if actions.is_empty() {
-        return;
+    let mut linked = Vec::new();
+    if !actions.is_empty() {
+        link_with(units, &actions, &mut linked, None, diags);
     }
+    Linked { actions, linked }
+}
+
+/// The rounds of [`link`] over `units`: `linked_before` holds the actions already linked (and
+/// gets those linked now); `seed`, for [`with_uncalled`]: the first round links every action not
+/// linked yet as if called, with its round labels numbered from `seed` (so they differ from the
+/// ones [`link`] gave).
+fn link_with(
+    units: &mut [CompilationUnit],
+    actions: &HashMap<String, Vec<Action>>,
+    linked_before: &mut Vec<(String, String)>,
+    seed: Option<usize>,
+    diags: &mut Diagnostics,
+) {
     let mut kinds: HashMap<String, PouKind> = HashMap::new();
     // every POU's variables (upper-case names): `Table.Motor.Stop` walks into instances
     let mut pou_vars: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
@@ -123,9 +146,17 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
     // In rounds: the calls are rewritten and the called actions noted per function block
     // (upper-case names), then linked into their blocks; a linked action's own calls of actions
     // are rewritten in the next round.
-    let mut linked_before: Vec<(String, String)> = Vec::new();
     for round in 0.. {
         let mut called: HashMap<String, Vec<String>> = HashMap::new();
+        if round == 0 && seed.is_some() {
+            for (pou, list) in actions {
+                for a in list {
+                    if !linked_before.contains(&(pou.clone(), a.name.key())) {
+                        called.entry(pou.clone()).or_default().push(a.name.key());
+                    }
+                }
+            }
+        }
         for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
             let LibraryElement::Pou(p) = item else {
                 continue;
@@ -140,7 +171,7 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
                 lists: &lists,
                 pou_vars: &pou_vars,
                 kinds: &kinds,
-                actions: &actions,
+                actions,
                 instances: &instances,
                 caller: p.name.key(),
             };
@@ -172,64 +203,125 @@ pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
             }
             linked_before.extend(linked.iter().map(|a| (key.clone(), a.name.key())));
             progress = true;
-            let span = p.span;
-            let end = Ident::new(format!("{LABEL_PREFIX}END{round}"), span);
-            let mut body = Vec::new();
-            let mut tail = vec![jump(Condition::Always, &end, span)];
-            let mut flags = Vec::new();
-            for a in linked {
-                let s = a.name.span;
-                let flag = VarRef {
-                    base: Ident::new(flag_name(&a.name), s),
-                    accessors: Default::default(),
-                    span: s,
-                };
-                let label = Ident::new(
-                    format!("{LABEL_PREFIX}{}", a.name.name.to_ascii_uppercase()),
-                    s,
-                );
-                flags.push(VarDecl::new(
-                    flag.base.clone(),
-                    TypeRef::Named(Ident::new("BOOL", s)),
-                    s,
-                ));
-                body.push(simple(Op::Ld, Operand::Var(flag.clone()), s));
-                body.push(jump(Condition::IfTrue, &label, s));
-                tail.push(IlStmt::Label(label));
-                tail.push(simple(Op::Ld, bool_lit(false, s), s));
-                tail.push(simple(Op::St, Operand::Var(flag), s));
-                tail.extend(a.body);
-                tail.push(jump(Condition::Always, &end, s));
-                if let Some(t) = a.temps {
-                    p.var_blocks.push(t);
-                }
-                for d in a.diagnostics {
-                    let known = diags
-                        .iter()
-                        .any(|e| e.code == d.code && e.span == d.span && e.message == d.message);
-                    if !known {
-                        diags.push(d);
-                    }
-                }
-            }
-            tail.push(IlStmt::Label(end));
-            body.append(&mut p.body);
-            body.append(&mut tail);
-            p.body = body;
-            p.var_blocks.push(VarBlock {
-                access: None,
-                name: None,
-                kind: VarKind::Input,
-                constant: false,
-                retain: false,
-                vars: flags,
-                span,
-            });
+            attach(p, linked, seed.unwrap_or(0) + round, diags);
         }
         if !progress {
             break;
         }
     }
+}
+
+/// Puts the actions `linked` into `p`: a hidden input flag each, the dispatch at the start of its
+/// body and the actions' statements after it (labels of round `round`); their lowering's
+/// diagnostics are reported (once).
+fn attach(p: &mut crate::ast::Pou, linked: Vec<Action>, round: usize, diags: &mut Diagnostics) {
+    let span = p.span;
+    let end = Ident::new(format!("{LABEL_PREFIX}END{round}"), span);
+    let mut body = Vec::new();
+    let mut tail = vec![jump(Condition::Always, &end, span)];
+    let mut flags = Vec::new();
+    for a in linked {
+        let s = a.name.span;
+        let flag = VarRef {
+            base: Ident::new(flag_name(&a.name), s),
+            accessors: Default::default(),
+            span: s,
+        };
+        let label = Ident::new(
+            format!("{LABEL_PREFIX}{}", a.name.name.to_ascii_uppercase()),
+            s,
+        );
+        flags.push(VarDecl::new(
+            flag.base.clone(),
+            TypeRef::Named(Ident::new("BOOL", s)),
+            s,
+        ));
+        body.push(simple(Op::Ld, Operand::Var(flag.clone()), s));
+        body.push(jump(Condition::IfTrue, &label, s));
+        tail.push(IlStmt::Label(label));
+        tail.push(simple(Op::Ld, bool_lit(false, s), s));
+        tail.push(simple(Op::St, Operand::Var(flag), s));
+        tail.extend(a.body);
+        tail.push(jump(Condition::Always, &end, s));
+        if let Some(t) = a.temps {
+            p.var_blocks.push(t);
+        }
+        for d in a.diagnostics {
+            let known = diags
+                .iter()
+                .any(|e| e.code == d.code && e.span == d.span && e.message == d.message);
+            if !known {
+                diags.push(d);
+            }
+        }
+    }
+    tail.push(IlStmt::Label(end));
+    body.append(&mut p.body);
+    body.append(&mut tail);
+    p.body = body;
+    p.var_blocks.push(VarBlock {
+        access: None,
+        name: None,
+        kind: VarKind::Input,
+        constant: false,
+        retain: false,
+        vars: flags,
+        span,
+    });
+}
+
+/// The units of `units` (after [`link`]) with each action [`link`] did not link (called from no
+/// other POU) linked into its POU as if another POU called it, for a check only: an action or
+/// METHOD nothing calls is checked as when it is called (issue #13: `check` runs every check
+/// `build` runs). `None` when every action is linked. The units returned are for a second
+/// semantic analysis, never compiled.
+pub fn with_uncalled(
+    units: &[CompilationUnit],
+    linked: &Linked,
+    diags: &mut Diagnostics,
+) -> Option<Vec<CompilationUnit>> {
+    let all = linked.actions.values().map(Vec::len).sum::<usize>();
+    if all == linked.linked.len() {
+        return None;
+    }
+    let mut out = units.to_vec();
+    let mut before = linked.linked.clone();
+    link_with(&mut out, &linked.actions, &mut before, Some(1000), diags);
+    Some(out)
+}
+
+/// The spans of the actions [`link`] did not link (the first and last instruction of each), for
+/// keeping the diagnostics of [`with_uncalled`]'s check that are theirs.
+pub fn uncalled_spans(linked: &Linked) -> Vec<crate::Span> {
+    let mut out = Vec::new();
+    for (pou, list) in &linked.actions {
+        for a in list {
+            if linked.linked.contains(&(pou.clone(), a.name.key())) {
+                continue;
+            }
+            let spans: Vec<crate::Span> = a
+                .body
+                .iter()
+                .filter_map(|s| match s {
+                    IlStmt::Instr(i) => Some(i.span),
+                    IlStmt::Label(_) => None,
+                })
+                .collect();
+            // (the instructions of the method's own file: an inlined call may bring others)
+            let Some(file) = spans.first().map(|s| s.file) else {
+                continue;
+            };
+            let own = spans.iter().filter(|s| s.file == file);
+            let (Some(f), Some(l)) = (
+                own.clone().min_by_key(|s| s.start),
+                own.max_by_key(|s| s.end),
+            ) else {
+                continue;
+            };
+            out.push(f.to(*l));
+        }
+    }
+    out
 }
 
 /// The hidden input flag of an action.

@@ -126,6 +126,9 @@ pub struct Session {
     /// B&R library data types not compiled as they are made of stub blocks
     /// ([`crate::split_blocks::drop_stub_types`]): their uses' E1003 name the stub.
     stub_types: Vec<crate::split_blocks::StubType>,
+    /// The actions and METHODs read, and which were linked ([`il_frontend::actions::link`]): those
+    /// nothing calls are checked on their own ([`Session::check_uncalled`]).
+    pub linked_actions: il_frontend::actions::Linked,
 }
 
 /// What [`Session::parse`] produced: the user's units and what they are compiled with.
@@ -227,6 +230,7 @@ impl Session {
             libraries: Vec::new(),
             twincat_files: Vec::new(),
             stub_types: Vec::new(),
+            linked_actions: Default::default(),
         }
     }
 
@@ -838,7 +842,7 @@ impl Session {
         // a file's description and attribute pragmas (`{ DE:"..." }` on each variable): one note
         il_frontend::st::lexer::collapse_metadata_notes(&mut self.diags);
         lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);
-        il_frontend::actions::link(&mut units, &mut self.diags);
+        self.linked_actions = il_frontend::actions::link(&mut units, &mut self.diags);
         // B&R: a program folder's _INIT, _CYCLIC, _EXIT and .var files are one program
         crate::br_programs::join(&mut units, &self.map, &mut self.diags);
         il_frontend::st::qualifiers::set_project_programs(programs_before);
@@ -1265,6 +1269,7 @@ impl Session {
             Vec::new()
         };
         let model = self.analyze(&checked);
+        self.check_uncalled(&checked);
         if self.diags.has_errors() {
             if uses_blocks && opts.axes.is_none() && axes.axes.is_empty() && axes.groups.is_empty()
             {
@@ -1282,6 +1287,42 @@ impl Session {
             axes,
             cycle_ms,
         })
+    }
+
+    /// The actions and METHODs (property accessors too) that no POU calls, checked as when they
+    /// are called (issue #13: `check` runs every check `build` runs; before round 27 their bodies
+    /// were never analysed): a second semantic analysis of `units` with them linked into their
+    /// POUs ([`il_frontend::actions::with_uncalled`]), whose diagnostics inside their bodies are
+    /// kept when not already reported. Nothing of it is compiled.
+    fn check_uncalled(&mut self, units: &[CompilationUnit]) {
+        let linked = std::mem::take(&mut self.linked_actions);
+        let mut local = Diagnostics::new();
+        let Some(with) = il_frontend::actions::with_uncalled(units, &linked, &mut local) else {
+            return;
+        };
+        let spans = il_frontend::actions::uncalled_spans(&linked);
+        {
+            let _twincat = il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
+            il_frontend::sema::analyze_for_code(&with, &mut local);
+        }
+        let inside = |d: &Diagnostic| {
+            d.span.is_some_and(|s| {
+                spans
+                    .iter()
+                    .any(|a| a.file == s.file && a.start <= s.start && s.end <= a.end)
+            })
+        };
+        let fresh: Vec<Diagnostic> = local
+            .into_iter()
+            .filter(|d| {
+                inside(d)
+                    && !self
+                        .diags
+                        .iter()
+                        .any(|e| e.code == d.code && e.span == d.span && e.message == d.message)
+            })
+            .collect();
+        self.diags.extend(fresh);
     }
 
     /// The semantic analysis of `units` into [`Session::diags`], with or without the name table

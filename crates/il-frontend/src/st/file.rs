@@ -640,9 +640,50 @@ fn pending_members(
             what,
         })
     };
-    for m in &p.methods {
+    for (k, m) in p.methods.iter().enumerate() {
+        // a second METHOD of the same name (SIMATIC AX's overloading): one E1084, the first kept
+        if let Some(first) = p.methods[..k]
+            .iter()
+            .find(|o| o.name.eq_ignore_ascii_case(&m.name))
+        {
+            diags.push(
+                Diagnostic::error(
+                    code::E1084,
+                    format!("`{}` declares METHOD `{}` twice", p.name, m.name),
+                )
+                .at(Span::new(file, m.name_range.start, m.name_range.end))
+                .with_primary_label("second METHOD of this name")
+                .with_label(
+                    Span::new(file, first.name_range.start, first.name_range.end),
+                    "first declared here",
+                )
+                .with_hint(
+                    "IEC 61131-3 ed. 3: a method's name is unique in its class or block; SIMATIC AX \
+                     overloads methods by their parameters, ladderc does not: rename one (the \
+                     first is the one compiled and called)",
+                ),
+            );
+            blank(body, m.whole.clone());
+            continue;
+        }
         let mut pm = pending_method(file, src, m, method_diags);
-        pm.access = owned(m.access, &m.name, m.name_range.clone(), "METHOD");
+        // the widest access of the methods of its name (the E1084 above is the one error: a
+        // call meant for a PUBLIC second one is no E1021 more)
+        let access =
+            p.methods
+                .iter()
+                .filter(|o| o.name.eq_ignore_ascii_case(&m.name))
+                .map(|o| o.access)
+                .reduce(|a, b| match (a, b) {
+                    (None, _) | (_, None) => None,
+                    (Some(crate::ast::Access::Public), _)
+                    | (_, Some(crate::ast::Access::Public)) => Some(crate::ast::Access::Public),
+                    (Some(crate::ast::Access::Private), x)
+                    | (x, Some(crate::ast::Access::Private)) => x,
+                    (x, _) => x,
+                })
+                .flatten();
+        pm.access = owned(access, &m.name, m.name_range.clone(), "METHOD");
         super::var_stat::name_method_blocks(&mut pm, stat_at);
         references.apply_to_method(&mut pm.blocks, pm.ret.as_mut());
         methods.push(pm);

@@ -44,6 +44,20 @@ pub const TAG: &str = "__TAG";
 /// The hidden, always NULL reference a call through an unassigned interface reads.
 pub const UNASSIGNED: &str = "__UNASSIGNED";
 
+/// The hidden call the parser reads `r ?= e;` as (`r := ?=(e)`, IEC 61131-3 ed. 3, 6.6.6.7
+/// assignment attempt), rewritten by [`rewrite`].
+pub const ATTEMPT: &str = "?=";
+
+/// The operand of `r ?= e;` (`e`), when `value` is the parser's hidden call.
+fn attempt_operand(value: &Expr) -> Option<&Expr> {
+    match &value.kind {
+        ExprKind::Call { name, args } if name.name == ATTEMPT && args.len() == 1 => {
+            Some(&args[0].value)
+        }
+        _ => None,
+    }
+}
+
 /// The hidden field holding an instance of block `fb`: `__R_<FB>`.
 fn ref_field(fb: &str) -> String {
     format!("__R_{}", fb.to_ascii_uppercase())
@@ -449,7 +463,9 @@ pub(super) fn rewrite(
     first: usize,
     diags: &mut Diagnostics,
 ) -> Option<(Vec<Stmt>, Vec<VarDecl>)> {
-    if env.decls.interfaces.is_empty() && env.decls.bases.is_empty() {
+    let attempt =
+        matches!(&s.kind, StmtKind::Assign { value, .. } if attempt_operand(value).is_some());
+    if env.decls.interfaces.is_empty() && env.decls.bases.is_empty() && !attempt {
         return None;
     }
     let mut r = Rewriter {
@@ -510,6 +526,17 @@ impl Rewriter<'_, '_> {
         let span = s.span;
         let mut s = s.clone();
         match &mut s.kind {
+            StmtKind::Assign { target, value } if attempt_operand(value).is_some() => {
+                let mut src = attempt_operand(value)
+                    .cloned()
+                    .unwrap_or_else(|| value.clone());
+                self.compare(&mut src);
+                self.changed = true;
+                let out = self.attempt(target, &src, span);
+                let mut all = std::mem::take(&mut self.before);
+                all.extend(out);
+                return all;
+            }
             StmtKind::Assign { target, value } => {
                 if let Some(i) = self.place_interface(target).cloned() {
                     if let Some(out) = self.assign_interface(target, &i, value, span) {
@@ -560,6 +587,156 @@ impl Rewriter<'_, '_> {
         let mut out = std::mem::take(&mut self.before);
         out.push(s);
         out
+    }
+
+    /// `target ?= src;` (IEC 61131-3 ed. 3, 6.6.6.7 assignment attempt): `target`, an interface,
+    /// takes the instance `src` (an interface or an instance) holds when its block implements
+    /// it, else NULL (as `__QUERYINTERFACE`); `target`, a `REF_TO C` of a class or block, takes
+    /// the instance `src` holds when it is a `C` or derives from it, else NULL. Anything else is
+    /// one E1083.
+    fn attempt(&mut self, target: &Place, src: &Expr, span: Span) -> Vec<Stmt> {
+        let fail = |this: &mut Self, msg: String, label: &str, hint: &str| {
+            this.diags.push(
+                Diagnostic::error(code::E1083, msg)
+                    .at(span)
+                    .with_primary_label(label.to_string())
+                    .with_hint(hint.to_string()),
+            );
+            Vec::new()
+        };
+        let ExprKind::Place(sp) = &src.kind else {
+            return fail(
+                self,
+                "the right side of an assignment attempt `?=` is no variable, instance or method result".into(),
+                "not an interface or reference",
+                "write `r ?= itf;` with an interface, an instance, a reference or a method returning one",
+            );
+        };
+        if self.place_interface(target).is_some() {
+            let args = [
+                Arg {
+                    name: None,
+                    dir: ArgDir::Input,
+                    value: src.clone(),
+                    span: src.span,
+                },
+                Arg {
+                    name: None,
+                    dir: ArgDir::Input,
+                    value: place_expr(target.clone(), target.span),
+                    span: target.span,
+                },
+            ];
+            if self.place_interface(sp).is_none() && self.block_of(src).is_none() {
+                return fail(
+                    self,
+                    "an assignment attempt `?=` to an interface takes an interface or an instance"
+                        .into(),
+                    "neither an interface nor an instance",
+                    "assign an interface variable or a function block or class instance",
+                );
+            }
+            let _ = self.query(&Ident::new("__QUERYINTERFACE", span), &args, span);
+            return std::mem::take(&mut self.before);
+        }
+        let class = match self.env.place_type(target).map(|t| self.env.resolve(&t)) {
+            Some(TypeRef::Ref { target: t, .. }) => match *t {
+                TypeRef::Named(n) => self
+                    .env
+                    .decls
+                    .pou(&n.name)
+                    .filter(|p| p.kind == PouKind::FunctionBlock)
+                    .map(|p| p.name.clone()),
+                _ => None,
+            },
+            _ => None,
+        };
+        let Some(class) = class else {
+            return fail(
+                self,
+                "an assignment attempt `?=` writes an interface or a REF_TO a class or function block".into(),
+                "not an interface or reference to a class",
+                "declare the variable on the left as an interface or as `REF_TO` a class or function block",
+            );
+        };
+        // whether block `k` is `class` or derives from it
+        let bases = &self.env.decls.bases;
+        let fits = |k: &str| {
+            k.eq_ignore_ascii_case(&class)
+                || bases
+                    .get(&k.to_ascii_uppercase())
+                    .is_some_and(|b| b.iter().any(|x| x.eq_ignore_ascii_case(&class)))
+        };
+        if let Some(si) = self.place_interface(sp).cloned() {
+            let arms = si
+                .classes
+                .iter()
+                .filter(|(k, _)| fits(&k.name))
+                .map(|(k, tag)| CaseArm {
+                    labels: vec![CaseLabel::Value(int((*tag).into(), span))],
+                    body: vec![assign(
+                        target.clone(),
+                        place_expr(field(sp, &ref_field(&k.name), span), span),
+                        span,
+                    )],
+                    span,
+                })
+                .collect();
+            return vec![Stmt {
+                kind: StmtKind::Case {
+                    selector: place_expr(field(sp, TAG, span), span),
+                    arms,
+                    else_body: Some(vec![assign(target.clone(), null(span), span)]),
+                },
+                span,
+            }];
+        }
+        // a reference or an instance: its type is known when compiling
+        let (block, is_ref) = match self.env.place_type(sp).map(|t| self.env.resolve(&t)) {
+            Some(TypeRef::Ref { target: t, .. }) => match *t {
+                TypeRef::Named(n) => (Some(n.name), true),
+                _ => (None, true),
+            },
+            _ => (self.block_of(src).map(|b| b.name), false),
+        };
+        let Some(block) = block else {
+            return fail(
+                self,
+                "an assignment attempt `?=` to a reference takes an interface, an instance or a reference".into(),
+                "neither an interface, an instance nor a reference",
+                "assign an interface variable, a class or function block instance, or a REF_TO one",
+            );
+        };
+        let downcast = bases
+            .get(&class.to_ascii_uppercase())
+            .is_some_and(|b| b.iter().any(|x| x.eq_ignore_ascii_case(&block)));
+        if downcast && is_ref {
+            return fail(
+                self,
+                format!("an assignment attempt from a `REF_TO {block}` to a `REF_TO {class}` is not supported"),
+                "the instance's own class is not known when compiling",
+                "ladderc's references do not carry their instance's class: hold the instance in an interface variable and attempt from it",
+            );
+        }
+        let value = if !fits(&block) {
+            null(span)
+        } else if is_ref {
+            src.clone()
+        } else {
+            Expr {
+                kind: ExprKind::Call {
+                    name: Ident::new("REF", span),
+                    args: vec![Arg {
+                        name: None,
+                        dir: ArgDir::Input,
+                        value: src.clone(),
+                        span,
+                    }],
+                },
+                span,
+            }
+        };
+        vec![assign(target.clone(), value, span)]
     }
 
     /// `target := value` where `target` is of interface `i`: the statements setting its tag and

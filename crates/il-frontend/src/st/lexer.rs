@@ -58,6 +58,8 @@ enum Raw {
     Colon,
     #[token(":=")]
     Assign,
+    #[token("?=")]
+    AttemptAssign,
     #[token("=>")]
     Arrow,
     #[token("..")]
@@ -268,6 +270,8 @@ pub enum Tok {
     Colon,
     /// `:=` (assignment, input argument).
     Assign,
+    /// `?=` (IEC 61131-3 ed. 3 assignment attempt).
+    AttemptAssign,
     /// `=>` (output argument).
     Arrow,
     /// `..` (a CASE range).
@@ -392,6 +396,7 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
             Ok(Raw::Semi) => Tok::Semi,
             Ok(Raw::Colon) => Tok::Colon,
             Ok(Raw::Assign) => Tok::Assign,
+            Ok(Raw::AttemptAssign) => Tok::AttemptAssign,
             Ok(Raw::Arrow) => Tok::Arrow,
             Ok(Raw::DotDot) => Tok::DotDot,
             Ok(Raw::Dot) => Tok::Dot,

@@ -412,6 +412,39 @@ impl<'d> PouLowering<'d> {
         // the REFERENCE TO inputs bound for this call: reset to NULL when it returns
         let mut bound_refs = Vec::new();
         let mut positional = sig.inputs.iter();
+        // positional arguments after the inputs bind the outputs in order (IEC 61131-3 ed. 3,
+        // 6.6.1.4.2: a non-formal call gives every parameter of the definition in order; as a
+        // call from outside the block does, `crate::actions`)
+        let mut positional_outputs = sig.outputs.iter();
+        let bound: Vec<Arg>;
+        let args = if args.iter().filter(|a| a.name.is_none()).count() > sig.inputs.len()
+            && args
+                .iter()
+                .all(|a| a.name.is_none() && a.dir == ArgDir::Input)
+        {
+            let mut k = 0;
+            bound = args
+                .iter()
+                .map(|a| {
+                    k += 1;
+                    if k <= sig.inputs.len() {
+                        return a.clone();
+                    }
+                    match (positional_outputs.next(), &a.value.kind) {
+                        (Some(o), ExprKind::Place(_)) => Arg {
+                            name: Some(Ident::new(o.clone(), a.span)),
+                            dir: ArgDir::Output { negated: false },
+                            value: a.value.clone(),
+                            span: a.span,
+                        },
+                        _ => a.clone(),
+                    }
+                })
+                .collect();
+            &bound[..]
+        } else {
+            args
+        };
         for a in args {
             let (param, list) = match (&a.dir, &a.name) {
                 (ArgDir::Input, Some(n)) => {

@@ -993,6 +993,23 @@ impl<'s, 'd> Parser<'s, 'd> {
                 }
                 Some(StmtKind::Assign { target, value })
             }
+            // `r ?= e;` (IEC 61131-3 ed. 3, 6.6.6.7 assignment attempt; SIMATIC AX): `r`, an
+            // interface or a reference to a class or block, takes `e` when the instance `e`
+            // holds fits, else NULL (`super::interface_vars::ATTEMPT`)
+            Tok::AttemptAssign => {
+                let op = self.bump();
+                let value = self.expr();
+                if matches!(value.kind, ExprKind::Error) {
+                    return None;
+                }
+                let span = self.span(op.range.start, self.prev_end());
+                Some(reference_assign(
+                    target,
+                    super::interface_vars::ATTEMPT,
+                    value,
+                    span,
+                ))
+            }
             Tok::LParen => {
                 let args = self.args()?;
                 Some(StmtKind::Call {

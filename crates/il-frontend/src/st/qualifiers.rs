@@ -306,12 +306,54 @@ pub(super) fn library_qualifiers(
     // the POU the token is in (`POU.VAR` among the other files' names: a variable its
     // declaration in another file gives it)
     let mut pou = String::new();
+    // the base it EXTENDS (`CLASS EncA EXTENDS BaseEnc`): `_abs.M()` in its methods names a
+    // variable the base declares, maybe in another file (`BASE.VAR` among the other files' names)
+    let mut base = String::new();
+    // the namespaces open at the token (upper case, dotted)
+    let mut open_ns: Vec<String> = Vec::new();
     for (k, t) in toks.iter().enumerate() {
         let w = word(src, t).to_ascii_uppercase();
-        if matches!(w.as_str(), "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK")
-            && toks.get(k + 1).is_some_and(ident)
+        if w == "NAMESPACE" && matches!(t.tok, Tok::Ident | Tok::Kw(_)) {
+            let mut parts = Vec::new();
+            let mut j = k + 1;
+            if toks.get(j).is_some_and(|x| is_word(src, x, "INTERNAL")) {
+                j += 1;
+            }
+            while let Some(x) = toks.get(j).filter(|x| ident(x)) {
+                parts.push(word(src, x).to_ascii_uppercase());
+                if toks.get(j + 1).is_some_and(|d| d.tok == Tok::Dot) {
+                    j += 2;
+                } else {
+                    break;
+                }
+            }
+            if !parts.is_empty() {
+                open_ns.push(parts.join("."));
+            }
+        } else if w == "END_NAMESPACE" {
+            open_ns.pop();
+        }
+        if matches!(
+            w.as_str(),
+            "PROGRAM" | "FUNCTION" | "FUNCTION_BLOCK" | "CLASS"
+        ) && toks.get(k + 1).is_some_and(ident)
         {
             pou = word(src, &toks[k + 1]).to_ascii_uppercase();
+            base.clear();
+            // `CLASS [FINAL|ABSTRACT] Name`: the name is the last word before EXTENDS
+            if let Some(e) = toks[k + 1..]
+                .iter()
+                .take(4)
+                .position(|x| is_word(src, x, "EXTENDS"))
+            {
+                let at = k + 1 + e;
+                if let Some(b) = toks.get(at + 1).filter(|b| ident(b)) {
+                    base = word(src, b).to_ascii_uppercase();
+                }
+                if let Some(n) = toks.get(at - 1).filter(|n| ident(n)) {
+                    pou = word(src, n).to_ascii_uppercase();
+                }
+            }
         }
         if matches!(t.tok, Tok::Kw(_) | Tok::Ident) {
             // a type is named after `:` in VAR blocks and in TYPE declarations (a STRUCT's
@@ -335,7 +377,9 @@ pub(super) fn library_qualifiers(
             || PROJECT_PROGRAMS.with(|p| p.borrow().contains(&w))
             || OTHER_FILES_NAMES.with(|o| {
                 let o = o.borrow();
-                o.contains(&w) || (!pou.is_empty() && o.contains(&format!("{pou}.{w}")))
+                o.contains(&w)
+                    || (!pou.is_empty() && o.contains(&format!("{pou}.{w}")))
+                    || (!base.is_empty() && o.contains(&format!("{base}.{w}")))
             })
         {
             continue;
@@ -344,8 +388,21 @@ pub(super) fn library_qualifiers(
         if prev.is_some_and(|p| p.tok == Tok::Dot) {
             continue;
         }
-        // `Factory.Motion.Speed` of `NAMESPACE Factory.Motion`: the whole chain blanked
-        if let Some(end) = dotted.iter().find_map(|parts| {
+        // `Factory.Motion.Speed` of `NAMESPACE Factory.Motion`: the whole chain blanked; also
+        // named from inside an enclosing namespace (`Types.BeltData` in `NAMESPACE Plant.Line`
+        // for `NAMESPACE Plant.Line.Types`: IEC 61131-3 ed. 3, 6.9, names are looked up in the
+        // enclosing namespaces outward), the chain's tail after that namespace
+        let mut tails = dotted.iter().flat_map(|parts| {
+            (0..parts.len()).filter_map(|i| {
+                let head = parts[..i].join(".");
+                (i == 0
+                    || open_ns
+                        .iter()
+                        .any(|o| o == &head || o.starts_with(&format!("{head}."))))
+                .then(|| &parts[i..])
+            })
+        });
+        if let Some(end) = tails.find_map(|parts| {
             let matches = parts.iter().enumerate().all(|(n, part)| {
                 toks.get(k + 2 * n)
                     .is_some_and(|t| ident(t) && word(src, t).eq_ignore_ascii_case(part))
