@@ -4,9 +4,12 @@
 //!   axis on `Enable AND bRegulatorOn AND bDriveStart` and gives `bRegulatorRealState` /
 //!   `bDriveStartRealState`, MC_SetPosition's `Mode` is `Relative` (before: E1003 `AXIS_REF_SM3`,
 //!   E1011 `bRegulatorOn`, `bDriveStart`, although ladderc said it provides SM3_Basic).
+//! - a literal given to a FUNCTION_BLOCK's or FUNCTION's `VAR_IN_OUT CONSTANT` goes through a
+//!   temporary (before: E2005 from the C backend); to a plain `VAR_IN_OUT` it is E1088 at the
+//!   literal (before: E2005, two for a function call).
 
 mod common;
-use common::{column, in_dir, write_in};
+use common::{check_text, column, in_dir, run_text, write_in};
 
 /// An SM3 axis powered by SM3_Basic's MC_Power with `bDriveStart` rising at the sixth scan, its
 /// position set to 10 mm (MC_SetPosition, `Mode := FALSE`: absolute), then moved to 50 mm by
@@ -67,4 +70,79 @@ END_PROGRAM
     assert!(pos[5] >= 10.0 && pos[5] < 11.0, "{}", pos[5]);
     assert!((pos[99] - 50.0).abs() < 1e-9, "{}", pos[99]);
     assert_eq!(column(&trace, "Main.done")[99], 1.0);
+}
+
+/// A literal given to a FUNCTION_BLOCK's and a FUNCTION's `VAR_IN_OUT CONSTANT` (CODESYS,
+/// TwinCAT: read-only, takes any value) is passed through a temporary: LEN of 'abc' and 'abcd',
+/// then a variable passed as before.
+#[test]
+fn a_literal_to_a_var_in_out_constant_of_a_block_or_function_runs() {
+    let src = "FUNCTION_BLOCK FB_Count
+VAR_IN_OUT CONSTANT
+    sText : STRING;
+END_VAR
+VAR_OUTPUT
+    n : INT;
+END_VAR
+n := LEN(sText);
+END_FUNCTION_BLOCK
+FUNCTION F_Count : INT
+VAR_IN_OUT CONSTANT
+    sText : STRING;
+END_VAR
+F_Count := LEN(sText);
+END_FUNCTION
+PROGRAM Main
+VAR
+    counter : FB_Count;
+    a, b, c : INT;
+    greeting : STRING := 'hello';
+END_VAR
+counter(sText := 'abc', n => a);
+b := F_Count(sText := 'abcd');
+counter(sText := greeting);
+c := counter.n;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("inout_const.st", src, 2, "Main.a,Main.b,Main.c");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(column(&trace, "Main.a"), vec![3.0, 3.0]);
+    assert_eq!(column(&trace, "Main.b"), vec![4.0, 4.0]);
+    assert_eq!(column(&trace, "Main.c"), vec![5.0, 5.0]);
+}
+
+/// A literal given to a plain `VAR_IN_OUT` (passed by reference) is one E1088 per argument, at the
+/// literal, from the front end (before: E2005 from the C backend, two for the function call).
+#[test]
+fn a_literal_to_a_plain_var_in_out_is_e1088() {
+    let src = "FUNCTION_BLOCK FB_Count
+VAR_IN_OUT
+    sText : STRING;
+END_VAR
+VAR_OUTPUT
+    n : INT;
+END_VAR
+n := LEN(sText);
+END_FUNCTION_BLOCK
+FUNCTION F_Count : INT
+VAR_IN_OUT
+    sText : STRING;
+END_VAR
+F_Count := LEN(sText);
+END_FUNCTION
+PROGRAM Main
+VAR
+    counter : FB_Count;
+    a, b : INT;
+END_VAR
+counter(sText := 'abc', n => a);
+b := F_Count(sText := 'abcd');
+END_PROGRAM
+";
+    let (code, diags) = check_text("inout_plain.st", src);
+    assert_eq!(code, Some(1));
+    assert_eq!(diags.len(), 2, "{diags:?}");
+    assert!(diags[0].contains(":21:18: error[E1088]"), "{diags:?}");
+    assert!(diags[1].contains(":22:23: error[E1088]"), "{diags:?}");
+    assert!(diags.iter().all(|d| !d.contains("E2005")), "{diags:?}");
 }
