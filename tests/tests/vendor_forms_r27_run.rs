@@ -7,6 +7,8 @@
 //! - a literal given to a FUNCTION_BLOCK's or FUNCTION's `VAR_IN_OUT CONSTANT` goes through a
 //!   temporary (before: E2005 from the C backend); to a plain `VAR_IN_OUT` it is E1088 at the
 //!   literal (before: E2005, two for a function call).
+//! - TwinCAT's and CODESYS's global namespace operator, `.x` and `.GVL.x`, names the global even
+//!   where a local of that name hides it (before: E0100 per statement).
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -145,4 +147,69 @@ END_PROGRAM
     assert!(diags[0].contains(":21:18: error[E1088]"), "{diags:?}");
     assert!(diags[1].contains(":22:23: error[E1088]"), "{diags:?}");
     assert!(diags.iter().all(|d| !d.contains("E2005")), "{diags:?}");
+}
+
+/// `.nCount` (TwinCAT's global namespace operator) is the global `nCount` of `GVL_Demo` although
+/// MAIN declares its own `nCount`; `.GVL_Demo.bSeen` is the list's variable; `.nCount` reads in a
+/// condition too.
+#[test]
+fn the_global_namespace_operator_names_the_global_behind_a_local() {
+    let dir = tempfile::tempdir().unwrap();
+    write_in(
+        dir.path(),
+        "MAIN.TcPOU",
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1">
+  <POU Name="MAIN" Id="{3d1c0a52-0000-4000-8000-000000000001}" SpecialFunc="None">
+    <Declaration><![CDATA[PROGRAM MAIN
+VAR
+    nCount : INT;
+    bBig : BOOL;
+END_VAR
+]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[nCount := 100;
+.nCount := .nCount + 1;
+.GVL_Demo.bSeen := TRUE;
+IF .nCount > 2 THEN
+    bBig := TRUE;
+END_IF
+]]></ST>
+    </Implementation>
+  </POU>
+</TcPlcObject>
+"#,
+    );
+    write_in(
+        dir.path(),
+        "GVL_Demo.TcGVL",
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<TcPlcObject Version="1.1.0.1">
+  <GVL Name="GVL_Demo" Id="{3d1c0a52-0000-4000-8000-000000000002}">
+    <Declaration><![CDATA[VAR_GLOBAL
+    nCount : INT;
+    bSeen : BOOL;
+END_VAR
+]]></Declaration>
+  </GVL>
+</TcPlcObject>
+"#,
+    );
+    let (code, trace, stderr) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            "MAIN.TcPOU",
+            "GVL_Demo.TcGVL",
+            "--cycles",
+            "3",
+            "--watch",
+            "MAIN.nCount,GVL_Demo.nCount,GVL_Demo.bSeen,MAIN.bBig",
+        ],
+    );
+    assert_eq!(code, Some(0), "{stderr}");
+    assert_eq!(column(&trace, "MAIN.nCount"), vec![100.0; 3]);
+    assert_eq!(column(&trace, "GVL_Demo.nCount"), vec![1.0, 2.0, 3.0]);
+    assert_eq!(column(&trace, "GVL_Demo.bSeen"), vec![1.0; 3]);
+    assert_eq!(column(&trace, "MAIN.bBig"), vec![0.0, 0.0, 1.0]);
 }

@@ -29,6 +29,8 @@ use std::collections::HashMap;
 mod call_chain;
 mod dynamic_memory;
 mod for_control;
+pub(crate) mod global_ns;
+pub(crate) use global_ns::{GLOBAL_NS, GLOBAL_NS_SEEN};
 mod memory;
 pub(super) mod method_flow;
 pub use method_flow::{method_call_expr, METHOD_CALL};
