@@ -9,6 +9,9 @@
 //!   literal (before: E2005, two for a function call).
 //! - TwinCAT's and CODESYS's global namespace operator, `.x` and `.GVL.x`, names the global even
 //!   where a local of that name hides it (before: E0100 per statement).
+//! - a value of an `{attribute 'strict'}` enumeration stored into an integer or a bit string that
+//!   holds every value is its number, with W1439 (before: E1006; Beckhoff's 'strict' forbids
+//!   arithmetic and storing other values into the enumeration only).
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -212,4 +215,41 @@ END_VAR
     assert_eq!(column(&trace, "GVL_Demo.nCount"), vec![1.0, 2.0, 3.0]);
     assert_eq!(column(&trace, "GVL_Demo.bSeen"), vec![1.0; 3]);
     assert_eq!(column(&trace, "MAIN.bBig"), vec![0.0, 0.0, 1.0]);
+}
+
+/// A strict enumeration's values stored into a BYTE and an INT (as TwinCAT projects write
+/// `Q_.Stack := eColors.COLOR_RED;`) run as their numbers, one W1439 for the POU.
+#[test]
+fn a_strict_enumeration_value_is_stored_into_an_integer() {
+    let src = "{attribute 'qualified_only'}
+{attribute 'strict'}
+TYPE E_Lamp :
+(
+    OFF := 0,
+    RED := 1,
+    GREEN := 2
+) BYTE;
+END_TYPE
+PROGRAM Main
+VAR
+    run : BOOL;
+    lamp : BYTE;
+    lampCode : INT;
+    n : INT;
+END_VAR
+n := n + 1;
+run := n > 1;
+IF run THEN
+    lamp := E_Lamp.GREEN;
+ELSE
+    lamp := E_Lamp.RED;
+END_IF
+lampCode := E_Lamp.GREEN;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("strict_enum.st", src, 3, "Main.lamp,Main.lampCode");
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(stderr.matches("W1439").count(), 1, "{stderr}");
+    assert_eq!(column(&trace, "Main.lamp"), vec![1.0, 2.0, 2.0]);
+    assert_eq!(column(&trace, "Main.lampCode"), vec![2.0; 3]);
 }
