@@ -114,7 +114,10 @@ fn an_enumeration_without_strict_counts_as_its_number() {
     );
 }
 
-/// `{attribute 'strict'}` (also below another attribute) keeps IEC's strong typing.
+/// `{attribute 'strict'}` (also below another attribute) keeps IEC's strong typing where Beckhoff
+/// Infosys ("Attribute 'strict'") lists compile errors: an integer (variable or literal) stored
+/// into the enumeration, arithmetic with it (and, as before, a comparison with an integer). Its
+/// value stored into an integer is no error there (round 27: `vendor_forms_r27_run.rs`).
 #[test]
 fn a_strict_enumeration_stays_no_number() {
     let heads = rejected_heads(
@@ -122,15 +125,16 @@ fn a_strict_enumeration_stays_no_number() {
         "{attribute 'strict'}\nTYPE Strict : (A, B); END_TYPE\n\
          {attribute 'strict'}\n{attribute 'qualified_only'}\nTYPE Strict2 : (C, D); END_TYPE\n\
          PROGRAM main\nVAR\n  s : Strict;\n  t : Strict2;\n  n : INT;\nEND_VAR\n\
-         n := s;\ns := 1;\nn := t;\nIF s = 0 THEN n := 2; END_IF\nEND_PROGRAM\n",
+         s := n;\ns := 1;\nt := n;\nIF s = 0 THEN n := 2; END_IF\nn := s + 1;\nEND_PROGRAM\n",
     );
     assert_eq!(
         heads,
         [
-            "strict.st:12:1: error[E1006]: cannot store Strict into INT",
+            "strict.st:12:1: error[E1006]: cannot store INT into Strict",
             "strict.st:13:1: error[E1006]: cannot store an integer literal into Strict",
-            "strict.st:14:1: error[E1006]: cannot store Strict2 into INT",
+            "strict.st:14:1: error[E1006]: cannot store INT into Strict2",
             "strict.st:15:8: error[E1005]: EQ of Strict with an integer literal",
+            "strict.st:16:6: error[E1004]: ADD is not defined for Strict",
         ]
     );
 }

@@ -32,6 +32,7 @@ fn build_declarations(index: &Index) -> Declarations {
             name: p.name.clone(),
             vars: p.pins.iter().chain(&p.internals).cloned().collect(),
             ret: p.ret.clone(),
+            constant_in_outs: Vec::new(),
         });
     }
     for (name, ty) in &index.globals {

@@ -1224,6 +1224,8 @@ impl Session {
         axes.tc2_tables = crate::tc2_blocks::add(&mut user, &mut self.map, &mut self.diags);
         // B&R's EDGEPOS / EDGENEG / EDGE operators
         crate::br_edges::rewrite(&mut user);
+        // CODESYS SM3_Basic's AXIS_REF_SM3
+        crate::tc2_mc2::sm3_axis_type(&mut user);
         let uses_blocks = uses_library_blocks(&user, &library);
         if uses_blocks {
             crate::axis_links::link(&mut user, &mut axes, &mut self.diags);

@@ -26,7 +26,7 @@ use crate::axes::AxisConfig;
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
     Accessor, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt, Initializer,
-    InstrKind, LibraryElement, LiteralKind, Operand, TypeDef, TypeRef, VarDecl, VarRef,
+    InstrKind, LibraryElement, LiteralKind, Op, Operand, TypeDef, TypeRef, VarDecl, VarRef,
 };
 use param_passing::library::Library;
 use std::collections::HashMap;
@@ -35,7 +35,19 @@ use std::collections::HashMap;
 const SPELLINGS: &[(&str, &str, &str)] = &[
     ("MC_POWER", "ENABLE_POSITIVE", "EnablePositive"),
     ("MC_POWER", "ENABLE_NEGATIVE", "EnableNegative"),
+    // CODESYS SM3_Basic (helpme-codesys.com, SM3_Basic > MC_Power: "bRegulatorRealState: the
+    // power stage has been switched on", "bDriveStartRealState": the quick stop is released);
+    // ladderc's axis has one power state, its `Status`
+    ("MC_POWER", "BREGULATORREALSTATE", "Status"),
+    ("MC_POWER", "BDRIVESTARTREALSTATE", "Status"),
+    // SM3_Basic MC_SetPosition's `Mode` (FALSE absolute, TRUE relative)
+    ("MC_SETPOSITION", "MODE", "Relative"),
 ];
+
+/// CODESYS SM3_Basic MC_Power's inputs that take part in the power: the axis is ready to move
+/// when `Enable`, `bRegulatorOn` (the power stage) and `bDriveStart` (no quick stop) are all TRUE
+/// (helpme-codesys.com, SM3_Basic > MC_Power).
+const SM3_POWER_INPUTS: &[&str] = &["BREGULATORON", "BDRIVESTART"];
 
 /// Tc2_MC2 pins without a counterpart: (block or `*` for every block, pin, what it would need).
 const NO_COUNTERPART: &[(&str, &str, &str)] = &[
@@ -312,6 +324,14 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                 if let (Some(block), true) = (inst.get(&instance.base.key()), element) {
                     if let CallArgs::Formal(list) = args {
                         let unconditional = matches!(cond, Condition::Always);
+                        if block.eq_ignore_ascii_case("MC_POWER") {
+                            if let Some((decl, code)) = sm3_power(instance, list) {
+                                if !hidden.iter().any(|h| h.name.key() == decl.name.key()) {
+                                    hidden.push(decl);
+                                }
+                                after.push((k, code));
+                            }
+                        }
                         let mut scale = None;
                         list.retain_mut(|a| {
                             let pin = a.name.key();
@@ -402,6 +422,64 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
     for (at, code) in after.into_iter().rev() {
         body.splice(at..at, code);
     }
+}
+
+/// SM3_Basic's `MC_Power(Enable := e, bRegulatorOn := r, bDriveStart := d)`: the call's
+/// `Enable` becomes a hidden BOOL set to `e AND r AND d` just before the call (the hidden
+/// variable's declaration and that code), the two SM3 arguments are dropped. `None` when the call
+/// names neither SM3 input (PLCopen's MC_Power, powered by `Enable` alone).
+fn sm3_power(instance: &VarRef, list: &mut Vec<FormalArg>) -> Option<(VarDecl, Vec<IlStmt>)> {
+    let is_sm3 = |a: &FormalArg| SM3_POWER_INPUTS.contains(&a.name.key().as_str());
+    if !list.iter().any(is_sm3) {
+        return None;
+    }
+    let at = instance.span;
+    let name = format!("__SM3_ON_{}", instance.base.key());
+    let mut terms: Vec<Operand> = Vec::new();
+    let enable = list.iter_mut().find(|a| a.name.key() == "ENABLE");
+    if let Some(e) = enable {
+        terms.push(std::mem::replace(
+            &mut e.value,
+            Operand::Var(VarRef {
+                base: Ident::new(&name, at),
+                accessors: Vec::new().into(),
+                span: at,
+            }),
+        ));
+    }
+    terms.extend(list.iter().filter(|a| is_sm3(a)).map(|a| a.value.clone()));
+    list.retain(|a| !is_sm3(a));
+    let simple = |op, o| {
+        IlStmt::Instr(il_frontend::ast::Instruction {
+            kind: InstrKind::Simple {
+                op,
+                negate: false,
+                operand: Some(o),
+            },
+            span: at,
+        })
+    };
+    let mut code = Vec::new();
+    for (n, t) in terms.into_iter().enumerate() {
+        code.push(simple(if n == 0 { Op::Ld } else { Op::And }, t));
+    }
+    code.push(simple(
+        Op::St,
+        Operand::Var(VarRef {
+            base: Ident::new(&name, at),
+            accessors: Vec::new().into(),
+            span: at,
+        }),
+    ));
+    let decl = VarDecl {
+        name: Ident::new(&name, at),
+        location: None,
+        ty: TypeRef::Named(Ident::new("BOOL", at)),
+        init: None,
+        edge: None,
+        span: at,
+    };
+    Some((decl, code))
 }
 
 fn operand(o: &mut Operand, inst: &HashMap<String, String>, diags: &mut Diagnostics) {
@@ -568,4 +646,42 @@ fn axis_defaults(block: &str, list: &mut Vec<FormalArg>, at: il_frontend::Span, 
 
 fn is_zero(o: &Operand) -> bool {
     matches!(o, Operand::Literal(l) if matches!(l.kind, LiteralKind::Int(0)) || matches!(l.kind, LiteralKind::Real(r) if r == 0.0))
+}
+
+/// CODESYS SoftMotion's axis type, `AXIS_REF_SM3` (SM3_Basic), is ladderc's simulated `AXIS_REF`:
+/// renames it in every declaration of `units` (variables, fields, aliases, array elements and
+/// reference targets).
+pub fn sm3_axis_type(units: &mut [CompilationUnit]) {
+    fn ty(t: &mut TypeRef) {
+        match t {
+            TypeRef::Named(i) if i.is("AXIS_REF_SM3") => i.name = "AXIS_REF".into(),
+            TypeRef::Array { element, .. } => ty(element),
+            TypeRef::Ref { target, .. } => ty(target),
+            _ => {}
+        }
+    }
+    let block = |b: &mut il_frontend::ast::VarBlock| b.vars.iter_mut().for_each(|v| ty(&mut v.ty));
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        match item {
+            LibraryElement::Pou(p) => p.var_blocks.iter_mut().for_each(block),
+            LibraryElement::GlobalVars(b) => block(b),
+            LibraryElement::Configuration(c) => {
+                c.globals.iter_mut().for_each(block);
+                c.resources
+                    .iter_mut()
+                    .flat_map(|r| r.globals.iter_mut())
+                    .for_each(block);
+            }
+            LibraryElement::DataTypes(ts) => {
+                for t in ts {
+                    match &mut t.def {
+                        TypeDef::Struct { fields } => fields.iter_mut().for_each(|f| ty(&mut f.ty)),
+                        TypeDef::Alias { ty: a, .. } => ty(a),
+                        _ => {}
+                    }
+                }
+            }
+            LibraryElement::Action(_) => {}
+        }
+    }
 }

@@ -5,7 +5,9 @@
 //! IEC 61131-3 (ed. 3, 6.4.4.3) types enumerations strongly: a value is no number. CODESYS and
 //! TwinCAT convert between an enumeration and an integer implicitly unless the type is declared
 //! under `{attribute 'strict'}` (their DUT editor adds it; older code and libraries such as Struckig
-//! have none). ladderc does so, with one W1439 per POU; a strict enumeration keeps IEC's rule.
+//! have none). ladderc does so, with one W1439 per POU; a strict enumeration keeps IEC's rule,
+//! except that its value is stored into an integer that holds every value (Beckhoff Infosys,
+//! "Attribute 'strict'": compile errors for arithmetic and for storing into the enumeration only).
 //!
 //! Input: the types an assignment, an input or a generic function (comparison, arithmetic) sees.
 //! Output: whether they meet through the enumeration's number, and W1439 once per POU. Invariant:
@@ -25,6 +27,15 @@ fn loose_values<'m>(model: &'m Model, t: &Type) -> Option<&'m [(String, i128)]> 
     let ut = model.user_type(*id);
     match &ut.def {
         UserTypeDef::Enum { values, .. } if !ut.strict => Some(values),
+        _ => None,
+    }
+}
+
+/// The values of `t` if it is an enumeration, strict or not.
+fn enum_values<'m>(model: &'m Model, t: &Type) -> Option<&'m [(String, i128)]> {
+    let Type::Enum(id) = t else { return None };
+    match &model.user_type(*id).def {
+        UserTypeDef::Enum { values, .. } => Some(values),
         _ => None,
     }
 }
@@ -71,11 +82,13 @@ pub(super) fn bit_string_type(model: &Model, t: &Type, other: Elementary) -> Opt
         .then_some(Type::Elementary(other))
 }
 
-/// Whether a value of `from` may be stored into `to` through an enumeration's number: a loose
-/// enumeration into an integer or a bit string that holds all its values (`d : DWORD := eFlags`),
-/// an integer that widens to DINT into a loose enumeration.
+/// Whether a value of `from` may be stored into `to` through an enumeration's number: an
+/// enumeration into an integer or a bit string that holds all its values (`d : DWORD := eFlags`;
+/// a strict one too: Beckhoff's `{attribute 'strict'}` forbids arithmetic with the enumeration and
+/// storing other values into it, not storing its values into an integer), an integer that widens
+/// to DINT into a loose enumeration.
 pub(super) fn assignable_loose(model: &Model, from: &Type, to: &Type) -> bool {
-    if let (Some(values), Some(t)) = (loose_values(model, from), to.elementary()) {
+    if let (Some(values), Some(t)) = (enum_values(model, from), to.elementary()) {
         let range = match (t.is_integer(), t.int_range()) {
             (true, Some(r)) => Some(r),
             _ => bit_string_range(t),
@@ -108,7 +121,7 @@ impl Body<'_, '_> {
             .hint(if loose {
                 format!("compiled as CODESYS and TwinCAT do for an enumeration without {{attribute 'strict'}} (its number); convert with TO_DINT or declare the variable {n} for another IEC compiler")
             } else {
-                format!("an array index: CODESYS and TwinCAT index by the number of {n}, also under {{attribute 'strict'}} (it forbids arithmetic and storing other values, not indexing); write TO_DINT(...) for another IEC compiler")
+                format!("an array index or a value stored into an integer: CODESYS and TwinCAT use the number of {n} so, also under {{attribute 'strict'}} (it forbids arithmetic and storing other values into the enumeration); write TO_DINT(...) for another IEC compiler")
             });
     }
 }

@@ -29,6 +29,8 @@ use std::collections::HashMap;
 mod call_chain;
 mod dynamic_memory;
 mod for_control;
+pub(crate) mod global_ns;
+pub(crate) use global_ns::{GLOBAL_NS, GLOBAL_NS_SEEN};
 mod memory;
 pub(super) mod method_flow;
 pub use method_flow::{method_call_expr, METHOD_CALL};
@@ -119,6 +121,12 @@ pub struct PouLowering<'d> {
     /// Set while the arguments of a call whose callee is not known are lowered: their mix of
     /// formal and non-formal arguments is no E3106 (the callee's own error says what is wrong).
     unknown_callee: bool,
+    /// Set while the arguments of a call are lowered: the callee's `VAR_IN_OUT CONSTANT`
+    /// parameters (upper case), which take a value that is not a variable through a temporary.
+    constant_in_outs: Vec<String>,
+    /// Set with [`Self::constant_in_outs`]: the callee's name and its other VAR_IN_OUT parameters
+    /// (upper case), which need a variable (E1088).
+    plain_in_outs: (String, Vec<String>),
     /// Set while a call statement's function call is lowered: its value is not used (a FUNCTION
     /// without result type may stand there, nowhere else: E0354).
     result_dropped: bool,
@@ -275,6 +283,8 @@ impl<'d> PouLowering<'d> {
             raw_refs: false,
             mixed_args_reported: false,
             unknown_callee: false,
+            constant_in_outs: Vec::new(),
+            plain_in_outs: (String::new(), Vec::new()),
             result_dropped: false,
             per_call_refs: Default::default(),
             per_call_target: false,
@@ -1686,6 +1696,9 @@ impl<'d> PouLowering<'d> {
             .then(|| self.method_called(callee))
             .flatten();
         self.unknown_callee = fb_ty.is_none() && method.is_none();
+        if let Some(TypeRef::Named(t)) = fb_ty.as_ref().map(|t| self.env().resolve(t)) {
+            self.callee_in_outs(&t.name);
+        }
         let args = self.call_args(
             args,
             |env, name, k| match (&fb_ty, &method) {
@@ -1715,6 +1728,23 @@ impl<'d> PouLowering<'d> {
 
     /// Arguments of a call as IL operands (inputs that are not plain operands go through temporaries,
     /// computed into `out` first). `param_ty` gives the declared type of a named input.
+    /// Notes the VAR_IN_OUT parameters of the user POU `name` for the next [`Self::call_args`].
+    fn callee_in_outs(&mut self, name: &str) {
+        let Some(p) = self.decls.pou(name) else {
+            return;
+        };
+        let constant = p.constant_in_outs.clone();
+        let plain = p
+            .vars
+            .iter()
+            .filter(|v| v.1 == crate::ast::VarKind::InOut)
+            .map(|v| v.0.to_ascii_uppercase())
+            .filter(|n| !constant.contains(n))
+            .collect();
+        self.plain_in_outs = (p.name.clone(), plain);
+        self.constant_in_outs = constant;
+    }
+
     fn call_args(
         &mut self,
         args: &[Arg],
@@ -1723,6 +1753,8 @@ impl<'d> PouLowering<'d> {
         diags: &mut Diagnostics,
     ) -> CallArgs {
         let unknown_callee = std::mem::take(&mut self.unknown_callee);
+        let constant_in_outs = std::mem::take(&mut self.constant_in_outs);
+        let (callee, plain_in_outs) = std::mem::take(&mut self.plain_in_outs);
         if args.is_empty() {
             return CallArgs::None;
         }
@@ -1762,6 +1794,44 @@ impl<'d> PouLowering<'d> {
         for (k, a) in args.iter().enumerate() {
             let Some(name) = &a.name else { continue };
             let value = match a.dir {
+                // `VAR_IN_OUT CONSTANT` given a value that is not a variable (CODESYS, TwinCAT:
+                // `fb(sTopic := 'abc')`): the value is stored in a temporary, which is passed
+                ArgDir::Input
+                    if !matches!(a.value.kind, ExprKind::Place(_))
+                        && constant_in_outs.contains(&name.key()) =>
+                {
+                    match param_ty(&self.env(), name, k) {
+                        Some(ty) => {
+                            self.lit_hint = Some(ty.clone());
+                            self.value(&a.value, out, diags);
+                            let t = self.temp(ty, a.value.span);
+                            out.push(simple(Op::St, false, Some(var_operand(&t)), a.value.span));
+                            var_operand(&t)
+                        }
+                        None => self.operand(&a.value, None, out, diags),
+                    }
+                }
+                // a plain VAR_IN_OUT is passed by reference: it needs a variable (IEC 61131-3
+                // 6.6.1.2.2; CODESYS, TwinCAT: "a constant cannot be passed")
+                ArgDir::Input
+                    if !matches!(a.value.kind, ExprKind::Place(_))
+                        && plain_in_outs.contains(&name.key()) =>
+                {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E1088,
+                            format!("VAR_IN_OUT `{}` of `{callee}` needs a variable", name.name),
+                        )
+                        .at(a.value.span)
+                        .with_primary_label("not a variable")
+                        .with_hint(format!(
+                            "an in-out is passed by reference: store the value in a variable and pass that (`{} := v`), or declare the parameter `VAR_IN_OUT CONSTANT`",
+                            name.name
+                        )),
+                    );
+                    self.poisoned = true;
+                    continue;
+                }
                 ArgDir::Input => {
                     let hint = param_ty(&self.env(), name, k);
                     self.operand(&a.value, hint.as_ref(), out, diags)
@@ -2984,6 +3054,7 @@ impl<'d> PouLowering<'d> {
                 let callee2 = self.resolve_callee(name);
                 self.unknown_callee =
                     matches!(callee2, Callee::Other) && self.decls.pou(&name.name).is_none();
+                self.callee_in_outs(&name.name);
                 let args = match self.call_args(
                     args,
                     |env, n, k| hint_of(env, &callee2, k, Some(n), &all),

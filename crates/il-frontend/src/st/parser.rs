@@ -739,6 +739,8 @@ impl<'s, 'd> Parser<'s, 'd> {
                 Some(StmtKind::Jump(label))
             }
             Tok::Ident | Tok::Address(..) => self.assign_or_call(),
+            // `.x := ...;`, `.GVL.x := ...;` (CODESYS, TwinCAT: the global namespace operator)
+            Tok::Dot if matches!(self.peek_at(1), Tok::Ident) => self.assign_or_call(),
             Tok::Error => {
                 self.sync();
                 return None;
@@ -1539,6 +1541,19 @@ impl<'s, 'd> Parser<'s, 'd> {
                 let f = self.bump();
                 PlaceBase::Name(self.ident(&f))
             }
+            // `.x`, `.GVL.x`: the global namespace operator (CODESYS "Operator: Global Namespace",
+            // Beckhoff Infosys "Global namespace": "an instance path that starts with a dot .
+            // always opens a global namespace"); the lowering resolves the marked name
+            // (`crate::st::lower::global_ns`)
+            Tok::Dot if *self.peek() == Tok::Ident => {
+                let f = self.bump();
+                let id = self.ident(&f);
+                crate::st::lower::GLOBAL_NS_SEEN.store(true, std::sync::atomic::Ordering::Relaxed);
+                PlaceBase::Name(Ident::new(
+                    format!("{}{}", crate::st::lower::GLOBAL_NS, id.name),
+                    self.span(start, f.range.end),
+                ))
+            }
             Tok::Ident => PlaceBase::Name(self.ident(&t)),
             Tok::Address(area, size, path) => PlaceBase::Address(DirectAddress {
                 area,
@@ -2132,37 +2147,42 @@ impl<'s, 'd> Parser<'s, 'd> {
                     None => self.error_expr(here),
                 }
             }
-            Tok::Ident | Tok::Address(..) => match self.place() {
-                Some(p) => {
-                    if self.at(&Tok::LParen) {
-                        if let Some(Accessor::Field(m)) = p.accessors.last() {
-                            return self.method_call_expr(p.clone(), m.clone());
-                        }
-                        // `THIS^.M(...)`: a call of the block's own method `M(...)`
-                        if let (PlaceBase::Name(name), true) = (&p.base, p.accessors.is_empty()) {
-                            let name = name.clone();
-                            return match self.args() {
-                                Some(args) => Expr {
-                                    kind: ExprKind::Call { name, args },
-                                    span: here.to(self.span(self.prev_end(), self.prev_end())),
-                                },
-                                None => self.error_expr(here),
-                            };
-                        }
-                        self.error_here(
+            Tok::Ident | Tok::Address(..) | Tok::Dot
+                if t.tok != Tok::Dot || matches!(self.peek_at(1), Tok::Ident) =>
+            {
+                match self.place() {
+                    Some(p) => {
+                        if self.at(&Tok::LParen) {
+                            if let Some(Accessor::Field(m)) = p.accessors.last() {
+                                return self.method_call_expr(p.clone(), m.clone());
+                            }
+                            // `THIS^.M(...)`: a call of the block's own method `M(...)`
+                            if let (PlaceBase::Name(name), true) = (&p.base, p.accessors.is_empty())
+                            {
+                                let name = name.clone();
+                                return match self.args() {
+                                    Some(args) => Expr {
+                                        kind: ExprKind::Call { name, args },
+                                        span: here.to(self.span(self.prev_end(), self.prev_end())),
+                                    },
+                                    None => self.error_expr(here),
+                                };
+                            }
+                            self.error_here(
                             code::E0108,
                             "only a function name can be called inside an expression",
                             "call the function block as a statement (`inst(...);`) and read its output (`inst.Q`)",
                         );
-                        return self.error_expr(p.span);
+                            return self.error_expr(p.span);
+                        }
+                        Expr {
+                            span: p.span,
+                            kind: ExprKind::Place(p),
+                        }
                     }
-                    Expr {
-                        span: p.span,
-                        kind: ExprKind::Place(p),
-                    }
+                    None => self.error_expr(here),
                 }
-                None => self.error_expr(here),
-            },
+            }
             Tok::Error => {
                 self.bump();
                 self.error_expr(here)

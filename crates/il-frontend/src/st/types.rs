@@ -22,6 +22,9 @@ pub struct PouInterface {
     pub vars: Vec<(String, VarKind, TypeRef)>,
     /// A FUNCTION's result type.
     pub ret: Option<TypeRef>,
+    /// The upper-case names of its `VAR_IN_OUT CONSTANT` parameters: they take any value (CODESYS,
+    /// TwinCAT), passed through a temporary when it is not a variable.
+    pub constant_in_outs: Vec<String>,
 }
 
 impl PouInterface {
@@ -40,6 +43,12 @@ impl PouInterface {
                 })
                 .collect(),
             ret: p.return_type.clone(),
+            constant_in_outs: p
+                .var_blocks
+                .iter()
+                .filter(|b| b.kind == VarKind::InOut && b.constant)
+                .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+                .collect(),
         }
     }
     /// The parameters (inputs, outputs, in-outs) in declaration order.

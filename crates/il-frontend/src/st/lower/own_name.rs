@@ -27,14 +27,21 @@ use std::borrow::Cow;
 impl PouLowering<'_> {
     /// `stmts` with the program's own name dropped before its actions and methods (see the module
     /// documentation); borrowed unchanged when nothing names one so.
+    /// Also resolves the global namespace operator's places (`.x`, [`super::global_ns`]).
     pub(super) fn own_names_dropped<'s>(&self, stmts: &'s [Stmt]) -> Cow<'s, [Stmt]> {
-        if !self.own_prefix_possible() {
+        let own = self.own_prefix_possible();
+        let global = global_ns_seen();
+        if !own && !global {
             return Cow::Borrowed(stmts);
         }
         let mut v = stmts.to_vec();
         let mut hit = false;
         walk(&mut v, &mut |p| {
-            if self.is_own_member(p) {
+            if global && super::global_ns::is_marked(p) {
+                hit = true;
+                super::global_ns::resolve(p, self.decls);
+            }
+            if own && self.is_own_member(p) {
                 hit = true;
                 drop_base(p);
             }
@@ -48,13 +55,19 @@ impl PouLowering<'_> {
 
     /// [`Self::own_names_dropped`] for one expression.
     pub(super) fn own_names_dropped_expr(&self, e: &Expr) -> Option<Expr> {
-        if !self.own_prefix_possible() {
+        let own = self.own_prefix_possible();
+        let global = global_ns_seen();
+        if !own && !global {
             return None;
         }
         let mut e = e.clone();
         let mut hit = false;
         walk_expr(&mut e, &mut |p| {
-            if self.is_own_member(p) {
+            if global && super::global_ns::is_marked(p) {
+                hit = true;
+                super::global_ns::resolve(p, self.decls);
+            }
+            if own && self.is_own_member(p) {
                 hit = true;
                 drop_base(p);
             }
@@ -89,6 +102,10 @@ impl PouLowering<'_> {
             || self.il_actions.contains_key(&k)
             || self.methods.contains_key(&k)
     }
+}
+
+fn global_ns_seen() -> bool {
+    super::GLOBAL_NS_SEEN.load(std::sync::atomic::Ordering::Relaxed)
 }
 
 /// `Prog.Act.rest` -> `Act.rest`.
