@@ -83,6 +83,8 @@ fn link_with(
     diags: &mut Diagnostics,
 ) {
     let mut kinds: HashMap<String, PouKind> = HashMap::new();
+    // each POU's text, for the access check of code a derived block inherits (`check_access`)
+    let mut pou_spans: HashMap<String, crate::Span> = HashMap::new();
     // every POU's variables (upper-case names): `Table.Motor.Stop` walks into instances
     let mut pou_vars: HashMap<String, HashMap<String, TypeRef>> = HashMap::new();
     let mut globals: HashMap<String, TypeRef> = HashMap::new();
@@ -103,6 +105,7 @@ fn link_with(
         match item {
             LibraryElement::Pou(p) => {
                 kinds.insert(p.name.key(), p.kind);
+                pou_spans.insert(p.name.key(), p.span);
                 pou_vars.insert(
                     p.name.key(),
                     p.var_blocks
@@ -173,6 +176,7 @@ fn link_with(
                 kinds: &kinds,
                 actions,
                 instances: &instances,
+                pou_spans: &pou_spans,
                 caller: p.name.key(),
             };
             rewrite_calls(&mut p.body, &scope, &mut called, diags);
@@ -344,6 +348,15 @@ fn check_access(
     if scope.caller == m.owner {
         return;
     }
+    // written in the owner's own text, inherited into a derived block (`Compare` of `Account`
+    // calling `other.Secret()`, run by a `Savings EXTENDS Account`): the owner's code (IEC 61131-3
+    // ed. 3, 6.6.5: access is decided by the class that declares the code)
+    let at = instance.span;
+    if scope.pou_spans.get(&m.owner).is_some_and(|s| {
+        s.file == at.file && s.start <= at.start && at.end <= s.end && s.start < s.end
+    }) {
+        return;
+    }
     if m.access == crate::ast::Access::Protected {
         // the caller's chain of bases, read from its class variable (`base_view::class_var`)
         let derived = scope.pou_vars.get(&scope.caller).is_some_and(|vars| {
@@ -406,6 +419,9 @@ struct Scope<'a> {
     kinds: &'a HashMap<String, PouKind>,
     actions: &'a HashMap<String, Vec<Action>>,
     instances: &'a HashMap<String, Vec<Ident>>,
+    /// Each POU's text (by upper-case name): code inherited by a derived block keeps its spans
+    /// in its base's text (`st::inherit`).
+    pou_spans: &'a HashMap<String, crate::Span>,
     /// The calling POU (upper-case name).
     caller: String,
 }
