@@ -930,19 +930,41 @@ pub fn shown_names(text: &str) -> Option<String> {
             .map_or(text.len(), |n| i + n);
         let hidden = &text[i..end];
         let known = SPELLINGS.with(|s| s.borrow().get(&hidden.to_ascii_uppercase()).cloned());
-        let shown = known.unwrap_or_else(|| {
-            let rest = hidden.split_once('_').map_or(hidden, |(_, r)| r);
-            let rest = rest.split_once('_').map_or(rest, |(_, r)| r);
-            match rest.split_once('_') {
-                Some((m, v)) if !m.is_empty() && !v.is_empty() => format!("{m}.{v}"),
-                _ => rest.to_string(),
-            }
-        });
+        let shown = known.unwrap_or_else(|| unknown_hidden(hidden));
         out.push_str(&shown);
         changed = true;
         i = end;
     }
     changed.then_some(out)
+}
+
+/// A hidden name [`remember_spellings`] did not record (a variable no longer declared): the
+/// method's name as written, when a method whose name it starts with is known (the longest:
+/// method names may hold `_`), then the variable's upper-case name (`M_MoveBy.RDISTANCE`); else
+/// the name after its prefix.
+fn unknown_hidden(hidden: &str) -> String {
+    let upper = hidden.to_ascii_uppercase();
+    let rest = ["__M_", "__MD_", "__MZ_"]
+        .iter()
+        .find_map(|p| upper.strip_prefix(p))
+        .unwrap_or(&upper);
+    let method = SPELLINGS.with(|s| {
+        s.borrow()
+            .iter()
+            .filter(|(k, v)| k.starts_with(METHOD_PREFIX) && !v.contains('.'))
+            .filter_map(|(k, v)| {
+                let m = &k[METHOD_PREFIX.len()..];
+                rest.strip_prefix(m)
+                    .and_then(|r| r.strip_prefix('_'))
+                    .filter(|r| !r.is_empty())
+                    .map(|r| (m.len(), v.clone(), r.to_string()))
+            })
+            .max_by_key(|(n, _, _)| *n)
+    });
+    match method {
+        Some((_, m, var)) => format!("{m}.{var}"),
+        None => rest.to_string(),
+    }
 }
 
 /// `d` with the hidden names of methods' variables in its message, labels, hint and notes shown
