@@ -983,3 +983,116 @@ pub const METHOD_CALL_PREFIX: &str = "__MC";
 
 /// The prefix of a method's hidden variables (see [`method_var`]).
 pub const METHOD_PREFIX: &str = "__M_";
+
+thread_local! {
+    /// The hidden names of the methods' variables declared so far on this thread
+    /// (`__M_TAKE_O`, `__MD_TAKE_O`, `__M_TAKE`, `__MZ_TAKE`) with the user's spelling
+    /// (`Take.o`, `Take`): see [`remember_spellings`].
+    static SPELLINGS: std::cell::RefCell<std::collections::HashMap<String, String>> =
+        std::cell::RefCell::new(std::collections::HashMap::new());
+}
+
+/// Records how the user wrote method `method` and its variables `vars`, for [`shown_names`].
+pub fn remember_spellings<'a>(method: &str, vars: impl Iterator<Item = &'a str>) {
+    SPELLINGS.with(|s| {
+        let mut s = s.borrow_mut();
+        s.insert(method_result(method), method.to_string());
+        s.insert(
+            format!("__MZ_{}", method.to_ascii_uppercase()),
+            method.to_string(),
+        );
+        for v in vars {
+            let shown = format!("{method}.{v}");
+            s.insert(method_input_default(method, v), shown.clone());
+            s.insert(method_var(method, v), shown);
+        }
+    });
+}
+
+/// `text` (a diagnostic's message, label or hint) with each hidden name of a method's variable
+/// (`__M_TAKE_O`, its default `__MD_TAKE_O`, the result `__M_TAKE`) shown as the user wrote it
+/// (`Take.o`, `Take`; as recorded by [`remember_spellings`], else the hidden name without its
+/// prefix, `TAKE.O`); `None` when `text` holds none. Before round 27 messages showed the hidden
+/// names (E1012 `__M_TAKE_O of FB_User is ...`, E1080's chain).
+pub fn shown_names(text: &str) -> Option<String> {
+    if !text.contains("__M") {
+        return None;
+    }
+    let bytes = text.as_bytes();
+    let word = |b: u8| b.is_ascii_alphanumeric() || b == b'_';
+    let mut out = String::with_capacity(text.len());
+    let mut i = 0;
+    let mut changed = false;
+    while i < bytes.len() {
+        let starts = (i == 0 || !word(bytes[i - 1]))
+            && ["__M_", "__MD_", "__MZ_"]
+                .iter()
+                .any(|p| text[i..].starts_with(p));
+        if !starts {
+            let c = text[i..].chars().next().unwrap_or(' ');
+            out.push(c);
+            i += c.len_utf8();
+            continue;
+        }
+        let end = text[i..]
+            .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .map_or(text.len(), |n| i + n);
+        let hidden = &text[i..end];
+        let known = SPELLINGS.with(|s| s.borrow().get(&hidden.to_ascii_uppercase()).cloned());
+        let shown = known.unwrap_or_else(|| unknown_hidden(hidden));
+        out.push_str(&shown);
+        changed = true;
+        i = end;
+    }
+    changed.then_some(out)
+}
+
+/// A hidden name [`remember_spellings`] did not record (a variable no longer declared): the
+/// method's name as written, when a method whose name it starts with is known (the longest:
+/// method names may hold `_`), then the variable's upper-case name (`M_MoveBy.RDISTANCE`); else
+/// the name after its prefix.
+fn unknown_hidden(hidden: &str) -> String {
+    let upper = hidden.to_ascii_uppercase();
+    let rest = ["__M_", "__MD_", "__MZ_"]
+        .iter()
+        .find_map(|p| upper.strip_prefix(p))
+        .unwrap_or(&upper);
+    let method = SPELLINGS.with(|s| {
+        s.borrow()
+            .iter()
+            .filter(|(k, v)| k.starts_with(METHOD_PREFIX) && !v.contains('.'))
+            .filter_map(|(k, v)| {
+                let m = &k[METHOD_PREFIX.len()..];
+                rest.strip_prefix(m)
+                    .and_then(|r| r.strip_prefix('_'))
+                    .filter(|r| !r.is_empty())
+                    .map(|r| (m.len(), v.clone(), r.to_string()))
+            })
+            .max_by_key(|(n, _, _)| *n)
+    });
+    match method {
+        Some((_, m, var)) => format!("{m}.{var}"),
+        None => rest.to_string(),
+    }
+}
+
+/// `d` with the hidden names of methods' variables in its message, labels, hint and notes shown
+/// as the user wrote them ([`shown_names`]).
+pub fn show_user_names(d: &mut diagnostics::Diagnostic) {
+    let fix = |s: &mut String| {
+        if let Some(n) = shown_names(s) {
+            *s = n;
+        }
+    };
+    fix(&mut d.message);
+    fix(&mut d.primary_label);
+    for l in &mut d.labels {
+        fix(&mut l.message);
+    }
+    if let Some(h) = &mut d.hint {
+        fix(h);
+    }
+    for n in &mut d.notes {
+        fix(n);
+    }
+}

@@ -532,7 +532,22 @@ pub fn line_col(map: &SourceMap, d: &Diagnostic) -> Option<(usize, usize)> {
 
 /// `diags` as `ladderc` prints them in `format` (XML diagnostics with their POU, network and localId).
 pub fn render(map: &SourceMap, diags: &[Diagnostic], format: MessageFormat) -> String {
-    let located = crate::xml_context::annotate(map, diags);
+    let mut located = crate::xml_context::annotate(map, diags);
+    // no generated name of a method's variable in what the user reads (`Take.o`)
+    let hidden = |d: &Diagnostic| {
+        std::iter::once(&d.message)
+            .chain(Some(&d.primary_label))
+            .chain(d.labels.iter().map(|l| &l.message))
+            .chain(d.hint.as_ref())
+            .chain(d.notes.iter())
+            .any(|t| t.contains("__M"))
+    };
+    if located.iter().any(hidden) {
+        located
+            .to_mut()
+            .iter_mut()
+            .for_each(il_frontend::actions::show_user_names);
+    }
     diagnostics::render(map, &located, format)
 }
 

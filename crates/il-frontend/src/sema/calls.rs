@@ -1631,6 +1631,8 @@ impl Body<'_, '_> {
         let params: Vec<String> = params
             .iter()
             .filter(|p| !is_hidden_varlen(p))
+            // nor an action's hidden selector (`__ACTION_M`): no parameter the user may give
+            .filter(|p| !p.starts_with("__ACTION_"))
             .cloned()
             .collect();
         self.a

@@ -304,7 +304,10 @@ const RECENT: usize = 32;
 
 impl Drop for Diag<'_> {
     fn drop(&mut self) {
-        if let Some(d) = self.d.take() {
+        if let Some(mut d) = self.d.take() {
+            // the user's names, not the hidden ones of methods' variables (`Take.o`, not
+            // `__M_TAKE_O`): a default's message then equals its variable's, and is not repeated
+            crate::actions::show_user_names(&mut d);
             if !self.sink.iter().rev().take(RECENT).any(|p| *p == d) {
                 self.sink.push(d);
             }

@@ -189,6 +189,27 @@ pub fn literal_type(lit: &Literal) -> Result<LitType, LitError> {
             let _ = v;
             Ok(LitType::Known(Type::Elementary(e)))
         }
+        // a character by its code (`CHAR#16#80`, `WCHAR#16#20AC`): a CHAR is one byte, a WCHAR
+        // two (IEC 61131-3 ed. 3 Table 10; before round 27: E1017 for every code)
+        (LiteralKind::Int(v), Some((_, Some(e)))) if e.is_char() => {
+            let hi: i128 = if e == E::Wchar { 0xFFFF } else { 0xFF };
+            if (0..=hi).contains(v) {
+                Ok(LitType::Known(Type::Elementary(e)))
+            } else {
+                Err(LitError {
+                    message: format!("character code {v} does not fit {}", e.name()),
+                    hint: format!(
+                        "a {} holds the codes 0..{hi} (16#{hi:X}){}",
+                        e.name(),
+                        if e == E::Wchar {
+                            ""
+                        } else {
+                            "; use WCHAR# for a wider code"
+                        }
+                    ),
+                })
+            }
+        }
         (LiteralKind::Int(v), Some((name, Some(e)))) => match e.int_range() {
             Some((lo, hi)) if *v >= lo && *v <= hi => Ok(LitType::Known(Type::Elementary(e))),
             Some((lo, hi)) => Err(LitError {

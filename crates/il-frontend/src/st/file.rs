@@ -2698,6 +2698,23 @@ pub fn compile_pending(
             }
         }
     }
+    // an ACTION named like a variable of its block (its methods': in add_method_vars)
+    for pb in pending.iter().filter(|pb| !pb.actions.is_empty()) {
+        for unit in units.iter() {
+            for item in unit.items.iter() {
+                let LibraryElement::Pou(p) = item else {
+                    continue;
+                };
+                if p.name.span.file == pb.file && p.name.span.start as usize == pb.name_start {
+                    let actions = pb
+                        .actions
+                        .iter()
+                        .map(|(a, _, _)| ("an action", a.name.clone(), a.span));
+                    member_name_clashes(p, actions, diags);
+                }
+            }
+        }
+    }
     let mut decls = super::Declarations::from_units(units);
     for pb in pending.iter().filter(|pb| !pb.methods.is_empty()) {
         for unit in units.iter() {
@@ -2883,7 +2900,10 @@ pub fn add_method_vars(
     let mut kept = Vec::new();
     let mut stat = Vec::new();
     let mut externals: Vec<VarBlock> = Vec::new();
+    member_name_clashes(p, methods.iter().map(method_member), diags);
     for m in methods {
+        let names = m.blocks.iter().flat_map(|b| b.vars.iter());
+        crate::actions::remember_spellings(&m.name.name, names.map(|v| v.name.name.as_str()));
         if let Some(r) = &m.ret {
             let mut v = r.clone();
             v.name.name = method_result(&m.name.name);
@@ -3022,6 +3042,76 @@ pub fn add_method_vars(
             });
         }
     }
+}
+
+/// E1002 for each METHOD, PROPERTY or ACTION (`members`, as their hidden names: a property's
+/// accessors `__GET_P` / `__SET_P`) of block `p` named like one of its variables, apart from case
+/// or not (IEC 61131-3 names are case-insensitive, and a block's variables, methods, properties
+/// and actions share its namespace: before round 27 the program compiled, and `Z` inside the
+/// block meant the variable or the method's result depending on where it was read). Located at
+/// the later of the two declarations; reported once per member (a derived block that inherits
+/// both reaches them again).
+pub fn member_name_clashes(
+    p: &crate::ast::Pou,
+    members: impl Iterator<Item = (&'static str, String, Span)>,
+    diags: &mut Diagnostics,
+) {
+    let mut done = std::collections::HashSet::new();
+    for (what, name, span) in members {
+        let key = name.to_ascii_uppercase();
+        if !done.insert(key.clone()) {
+            continue; // a property's second accessor
+        }
+        let var = p
+            .var_blocks
+            .iter()
+            .filter(|b| !matches!(b.kind, crate::ast::VarKind::External))
+            .flat_map(|b| b.vars.iter())
+            .find(|v| v.name.key() == key);
+        let Some(v) = var else { continue };
+        let (at, first, first_what, second_what) =
+            if v.name.span.file == span.file && v.name.span.start > span.start {
+                (v.name.span, span, what, "a variable")
+            } else {
+                (span, v.name.span, "a variable", what)
+            };
+        let already = diags
+            .iter()
+            .any(|d| d.code == code::E1002 && d.span == Some(at));
+        if already {
+            continue;
+        }
+        diags.push(
+            Diagnostic::error(
+                code::E1002,
+                format!(
+                    "`{}` of `{}` is declared twice: as {first_what} and as {second_what}",
+                    name, p.name.name
+                ),
+            )
+            .at(at)
+            .with_primary_label("declared again here")
+            .with_label(first, "first declared here")
+            .with_hint("a block's variables, methods, properties and actions share one namespace, and names are case-insensitive: rename one of them"),
+        );
+    }
+}
+
+/// A method as [`member_name_clashes`] sees it: "method" or "property", its name as written (a
+/// property's, not its accessor's hidden `__GET_P`), where.
+fn method_member(m: &PendingMethod) -> (&'static str, String, Span) {
+    if !super::property::is_accessor(&m.name.name) {
+        return ("a method", m.name.name.clone(), m.name.span);
+    }
+    // the Get accessor's result and the Set accessor's input are named as the property
+    let written = m
+        .ret
+        .iter()
+        .chain(m.blocks.iter().flat_map(|b| b.vars.iter()))
+        .find(|v| v.name.span == m.name.span)
+        .map(|v| v.name.name.clone())
+        .unwrap_or_else(|| m.name.name[super::property::GET_PREFIX.len()..].to_string());
+    ("a property", written, m.name.span)
 }
 
 /// The pending bodies with the FB_init arguments of each METHOD's own VAR / VAR_TEMP instance

@@ -315,6 +315,10 @@ pub fn flatten(
         })
         .collect();
     let derived = declare_classes(units, &classes, &keys, &chains);
+    let mut out = out;
+    for m in out.iter_mut().flat_map(|b| b.methods.iter_mut()) {
+        method_in_outs_by_reference(m, &derived);
+    }
     Some(Flat {
         bodies: out,
         interfaces: table,
@@ -429,6 +433,49 @@ fn declare_classes(
         }
     }
     derived
+}
+
+/// A METHOD's `VAR_IN_OUT x : B` of a block `B` that has derived blocks: a `VAR_INPUT x :
+/// REFERENCE TO B`, as a block's own (see [`declare_classes`]): a derived instance may be passed
+/// to it, and the method's calls through it run the derived block's overrides (IEC 61131-3 ed. 3
+/// 6.6.5; before round 27: E1012 naming the hidden `__M_<M>_X`).
+fn method_in_outs_by_reference(m: &mut PendingMethod, derived: &super::base_view::Derived) {
+    use crate::ast::{RefKind, VarDecl};
+    let is_base =
+        |v: &VarDecl| matches!(&v.ty, TypeRef::Named(n) if derived.contains_key(&n.key()));
+    if !m
+        .blocks
+        .iter()
+        .any(|b| b.kind == VarKind::InOut && b.vars.iter().any(is_base))
+    {
+        return;
+    }
+    let mut blocks = Vec::with_capacity(m.blocks.len());
+    for b in std::mem::take(&mut m.blocks) {
+        if b.kind != VarKind::InOut || !b.vars.iter().any(is_base) {
+            blocks.push(b);
+            continue;
+        }
+        for v in b.vars.iter().cloned() {
+            let mut nb = b.clone();
+            if is_base(&v) {
+                let span = v.span;
+                nb.kind = VarKind::Input;
+                nb.vars = vec![VarDecl {
+                    ty: TypeRef::Ref {
+                        kind: RefKind::Reference,
+                        target: Box::new(v.ty.clone()),
+                        span,
+                    },
+                    ..v
+                }];
+            } else {
+                nb.vars = vec![v];
+            }
+            blocks.push(nb);
+        }
+    }
+    m.blocks = blocks;
 }
 
 /// In the IL body of `p`, `CAL inst(x := v)` where `x` is a converted VAR_IN_OUT of `inst`'s block
