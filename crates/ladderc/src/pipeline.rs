@@ -127,7 +127,7 @@ pub struct Session {
     /// ([`crate::split_blocks::drop_stub_types`]): their uses' E1003 name the stub.
     stub_types: Vec<crate::split_blocks::StubType>,
     /// The actions and METHODs read, and which were linked ([`il_frontend::actions::link`]): those
-    /// nothing calls are checked on their own ([`Session::check_uncalled`]).
+    /// nothing calls are checked on their own (`Session::check_uncalled`).
     pub linked_actions: il_frontend::actions::Linked,
 }
 

@@ -45,7 +45,7 @@ pub const TAG: &str = "__TAG";
 pub const UNASSIGNED: &str = "__UNASSIGNED";
 
 /// The hidden call the parser reads `r ?= e;` as (`r := ?=(e)`, IEC 61131-3 ed. 3, 6.6.6.7
-/// assignment attempt), rewritten by [`rewrite`].
+/// assignment attempt), rewritten by `rewrite`.
 pub const ATTEMPT: &str = "?=";
 
 /// The operand of `r ?= e;` (`e`), when `value` is the parser's hidden call.

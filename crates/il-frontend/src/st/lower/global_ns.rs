@@ -2,7 +2,7 @@
 //!
 //! CODESYS ("Operator: Global Namespace") and Beckhoff Infosys ("Global namespace"): "an instance
 //! path that starts with a dot . always opens a global namespace. So, if there is a local variable
-//! with the same name <varname> as a global variable, .<varname> is used to address the global
+//! with the same name `<varname>` as a global variable, `.<varname>` is used to address the global
 //! variable". The parser reads `.x` as a place whose base is `x` marked by [`GLOBAL_NS`].
 //!
 //! Input: a marked place. Output: the place qualified by the global variable list that declares
