@@ -779,6 +779,13 @@ impl<'s> Layout<'s> {
                         );
                         self.diags.push(d);
                     }
+                    if matches!(raw, RawToken::Word) && !self.src[s..e].is_ascii() {
+                        let d = crate::st::lexer::non_ascii_name_diagnostic(
+                            self.span(s, e),
+                            &self.src[s..e],
+                        );
+                        self.diags.push(d);
+                    }
                     if matches!(raw, RawToken::Word)
                         && self.var_head
                         && self.src[s..e].eq_ignore_ascii_case("PERSISTENT")
@@ -790,7 +797,15 @@ impl<'s> Layout<'s> {
                 }
                 Some(Err(err)) => {
                     self.swallowed |= err == LexError::UnterminatedComment;
+                    let skip_line = err == LexError::UnexpectedChar && !self.in_decl();
                     self.report_lex_error(err, s, e);
+                    if skip_line {
+                        // an IL line with a character that starts nothing (`# note: área`, a
+                        // dialect's comment): one error for the line, the rest of it skipped
+                        let rest = &self.src[e..];
+                        let end = rest.find(['\n', '\r']).unwrap_or(rest.len());
+                        self.lex.bump(end);
+                    }
                     Tok::Error
                 }
             };
