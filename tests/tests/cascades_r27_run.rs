@@ -49,6 +49,16 @@ END_PROGRAM
     assert!(lines[0].contains("`Motor_\u{e4}`"), "{lines:?}");
     assert!(lines[1].starts_with("intl.st:4:3:"), "{lines:?}");
     assert!(lines[2].starts_with("intl.st:5:3:"), "{lines:?}");
+    // in IL too, also on a line `LD name` read in one piece
+    let il =
+        "PROGRAM Main\nVAR \u{fc}ber : BOOL; x : BOOL; END_VAR\nLD \u{fc}ber\nST x\nEND_PROGRAM\n";
+    let (code, lines) = check_text("intl.il", il);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("intl.il:2:5: error[E1089]"),
+        "{lines:?}"
+    );
     // letters beyond ASCII in comments and strings stay fine: the same program renamed runs
     let ok = "PROGRAM Main
 VAR
