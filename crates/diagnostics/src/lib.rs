@@ -57,11 +57,16 @@ impl Diagnostics {
     pub fn new() -> Self {
         Self::default()
     }
-    /// Adds one, unless an equal one is there.
+    /// Adds one, unless an equal one is there (E1089, a name with letters beyond ASCII: one per
+    /// name and file, at its first use).
     pub fn push(&mut self, d: Diagnostic) {
         use std::hash::{Hash, Hasher};
         let mut h = std::collections::hash_map::DefaultHasher::new();
-        (d.code, d.severity, d.span, &d.message).hash(&mut h);
+        if d.code.0 == "E1089" {
+            (d.code, d.span.map(|s| s.file), &d.message).hash(&mut h);
+        } else {
+            (d.code, d.severity, d.span, &d.message).hash(&mut h);
+        }
         if self.seen.insert(h.finish()) {
             self.list.push(d);
         }
@@ -108,6 +113,11 @@ impl Diagnostics {
     pub fn since_mut(&mut self, from: usize) -> &mut [Diagnostic] {
         let from = from.min(self.list.len());
         &mut self.list[from..]
+    }
+    /// Changes each in place (a later stage completing an earlier one's message: how many uses an
+    /// unknown type has). The duplicate check keeps the text they were added with.
+    pub fn update(&mut self, f: impl FnMut(&mut Diagnostic)) {
+        self.list.iter_mut().for_each(f);
     }
     /// How many there are.
     pub fn len(&self) -> usize {

@@ -779,6 +779,13 @@ impl<'s> Layout<'s> {
                         );
                         self.diags.push(d);
                     }
+                    if matches!(raw, RawToken::Word) && !self.src[s..e].is_ascii() {
+                        let d = crate::st::lexer::non_ascii_name_diagnostic(
+                            self.span(s, e),
+                            &self.src[s..e],
+                        );
+                        self.diags.push(d);
+                    }
                     if matches!(raw, RawToken::Word)
                         && self.var_head
                         && self.src[s..e].eq_ignore_ascii_case("PERSISTENT")
@@ -790,7 +797,15 @@ impl<'s> Layout<'s> {
                 }
                 Some(Err(err)) => {
                     self.swallowed |= err == LexError::UnterminatedComment;
+                    let skip_line = err == LexError::UnexpectedChar && !self.in_decl();
                     self.report_lex_error(err, s, e);
+                    if skip_line {
+                        // an IL line with a character that starts nothing (`# note: área`, a
+                        // dialect's comment): one error for the line, the rest of it skipped
+                        let rest = &self.src[e..];
+                        let end = rest.find(['\n', '\r']).unwrap_or(rest.len());
+                        self.lex.bump(end);
+                    }
                     Tok::Error
                 }
             };
@@ -841,7 +856,9 @@ impl<'s> Layout<'s> {
     /// (see [`Layout::emit`]). The line's end (blanks before it) must follow: anything else on the
     /// line (an accessor, a second operand, a comment) keeps the tokens apart.
     fn line_token(&mut self, s: usize, e: usize, w: Word) -> bool {
+        // (a name with letters beyond ASCII goes the long way, which reports it: E1089)
         if !matches!(self.prev, Last::Start | Last::Eol)
+            || !self.src[s..e].is_ascii()
             || self.in_decl()
             || self.stack.last() == Some(&Frame::Args)
         {
@@ -864,6 +881,7 @@ impl<'s> Layout<'s> {
         }
         let second = ahead.span();
         let name = matches!(next, Some(Ok(RawToken::Word)))
+            && ahead.slice().is_ascii()
             && crate::lexer::classify(ahead.slice()) == Word::Ident;
         let (tok, end, prev2, prev) = match (next, op, jump) {
             (Some(Ok(RawToken::Word)), Some(op), _) if name => (
@@ -1354,9 +1372,11 @@ mod tests {
             "\u{20ac}END_TYPE; x",
         ] {
             let (_, d) = stream(src);
+            // (an unexpected character, `\u{fffd}`, takes the rest of its line: one E0001)
             assert!(
-                d.iter()
-                    .any(|m| m.starts_with("E0007") || m.starts_with("E0011")),
+                d.iter().any(|m| m.starts_with("E0007")
+                    || m.starts_with("E0011")
+                    || m.starts_with("E0001")),
                 "{src:?}: {d:?}"
             );
         }

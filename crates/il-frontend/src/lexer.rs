@@ -59,8 +59,9 @@ pub enum RawToken {
     /// `// ...` to the end of the line (skipped; an extension most tools accept).
     #[regex(r"//[^\r\n]*", logos::skip, allow_greedy = true)]
     LineComment,
-    /// A word: identifier or keyword, classified later by [`classify`].
-    #[regex(r"[A-Za-z_][A-Za-z0-9_]*")]
+    /// A word: identifier or keyword, classified later by [`classify`]. A word with letters beyond
+    /// ASCII (`Motor_ä`, CODESYS 3 accepts them) is one word too: the layout reports it once (E1089).
+    #[regex(r"[A-Za-z_\p{L}][A-Za-z0-9_\p{L}\p{N}]*")]
     Word,
     /// `INT#`, `BOOL#`, `Color#` (a typed literal or enum value follows) or a whole `T#1s`, `D#...`.
     #[regex(r"[A-Za-z_][A-Za-z0-9_]*#", prefixed)]

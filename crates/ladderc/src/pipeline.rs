@@ -1118,6 +1118,7 @@ impl Session {
         self.libraries = opts.libraries.clone();
         let units = self.load_as(paths, opts.lang);
         if self.diags.has_errors() {
+            self.unknown_types_behind_bounds(&units, &library);
             return None;
         }
         Some(Parsed {
@@ -1329,6 +1330,39 @@ impl Session {
 
     /// The semantic analysis of `units` into [`Session::diags`], with or without the name table
     /// ([`Session::name_table`]).
+    /// When the only errors of the files are constant expressions without a value (E0022, an
+    /// array bound naming a constant of a library or file not given), the types that nothing
+    /// declares are reported too (E1003): a file that needs a vendor library names all it lacks in
+    /// one run, not the types only once a constant is supplied. Nothing else of the check is
+    /// reported (it would follow from the bound).
+    fn unknown_types_behind_bounds(&mut self, units: &[CompilationUnit], library: &Library) {
+        let only_bounds = self
+            .diags
+            .iter()
+            .filter(|d| d.severity == diagnostics::Severity::Error)
+            .all(|d| d.code == code::E0022);
+        if !only_bounds || units.is_empty() {
+            return;
+        }
+        let mut found = Diagnostics::new();
+        {
+            let _twincat = il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
+            il_frontend::sema::analyze_for_code(units, &mut found);
+        }
+        // (a PLCopen block or an axis is declared by the block library, checked with it later)
+        let provided = |name: &str| {
+            library.get(name).is_some()
+                || name.eq_ignore_ascii_case("AXIS_REF")
+                || name.eq_ignore_ascii_case("AXES_GROUP_REF")
+        };
+        self.diags.extend(found.into_iter().filter(|d| {
+            d.code == code::E1003
+                && d.message
+                    .strip_prefix("unknown type `")
+                    .is_some_and(|rest| rest.split('`').next().is_some_and(|name| !provided(name)))
+        }));
+    }
+
     fn analyze(&mut self, units: &[CompilationUnit]) -> il_frontend::sema::Model {
         let _twincat = il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
         let model = if self.name_table {

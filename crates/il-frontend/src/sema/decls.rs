@@ -820,6 +820,20 @@ impl Analyzer<'_> {
                 "declare it in a TYPE block or as a FUNCTION_BLOCK, or use an elementary type".into()
             }
         };
+        // one E1003 per unknown type, counting its uses (a library block for three instances is
+        // one cause)
+        if !self.silent {
+            let key = n.key();
+            if let Some((_, first, others)) =
+                self.unknown_types.iter_mut().find(|(k, ..)| *k == key)
+            {
+                if *first != n.span && !others.contains(&n.span) {
+                    others.push(n.span);
+                }
+                return Type::Error;
+            }
+            self.unknown_types.push((key, n.span, Vec::new()));
+        }
         self.error(code::E1003, n.span, format!("unknown type `{}`", n.name))
             .label("no such type")
             .hint(hint);

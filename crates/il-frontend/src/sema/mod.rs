@@ -111,6 +111,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         copying_instance_pous: std::collections::HashSet::new(),
         unknown_enums: Vec::new(),
         unknown_enum_uses: std::collections::HashSet::new(),
+        unknown_types: Vec::new(),
     };
     let pous = a.declare(units);
     // a block holding an instance of itself by value has no size: E1080, the variable cut
@@ -126,6 +127,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         a.check_body(id, pou);
     }
     a.report_unknown_enums();
+    a.count_unknown_types();
     a.model
 }
 
@@ -197,9 +199,35 @@ pub(crate) struct Analyzer<'d> {
     /// The uses counted in `unknown_enums` (file, start): one ST statement lowered to several IL
     /// instructions counts once.
     pub(crate) unknown_enum_uses: std::collections::HashSet<(crate::FileId, u32)>,
+    /// The unknown types of declarations (upper-case name, the E1003's span, the other uses): one
+    /// E1003 per name at its first use, its message counting the uses as the PLCopen XML reader's
+    /// E3009 does ([`Analyzer::count_unknown_types`]).
+    pub(crate) unknown_types: Vec<(String, crate::Span, Vec<crate::Span>)>,
 }
 
 impl Analyzer<'_> {
+    /// The E1003 of an unknown type used by several declarations says how many (`(3 uses)`), with
+    /// a label at each other use (which reported nothing).
+    fn count_unknown_types(&mut self) {
+        for (_, first, others) in std::mem::take(&mut self.unknown_types) {
+            if others.is_empty() {
+                continue;
+            }
+            self.diags.update(|d| {
+                if d.code == code::E1003 && d.span == Some(first) && !d.message.ends_with(" uses)")
+                {
+                    d.message = format!("{} ({} uses)", d.message, others.len() + 1);
+                    for s in &others {
+                        d.labels.push(diagnostics::Label {
+                            span: *s,
+                            message: "also used here".into(),
+                        });
+                    }
+                }
+            });
+        }
+    }
+
     /// One E1001 per unknown enumeration of `Type#Value` (a vendor library's `ReadArea#Output`
     /// used 8 times is one cause), at its first use, its message counting the other uses.
     fn report_unknown_enums(&mut self) {

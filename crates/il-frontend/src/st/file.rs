@@ -2218,16 +2218,29 @@ fn parse_text_as_read(
             .and_then(|h| h.split_whitespace().last())
             .is_some_and(|k| k.eq_ignore_ascii_case("FUNCTION_BLOCK"));
         if let (Some(r), true) = (&p.oop, in_block) {
-            // a function block's PROPERTY that scan_properties could not read
-            diags.push(
+            // a function block's PROPERTY that scan_properties could not read, or a METHOD
+            // that is not one (`METHOD Twice : INT;` among the declarations, no END_METHOD)
+            let method = src
+                .get(r.clone())
+                .is_some_and(|k| k.eq_ignore_ascii_case("METHOD"));
+            let d = if method {
+                Diagnostic::error(
+                    code::E0100,
+                    format!("`{}`: this METHOD cannot be read", p.name),
+                )
+                .at(Span::new(file, r.start, r.end))
+                .with_primary_label("METHOD without its body or its END_METHOD")
+                .with_hint("a method is written after the block's declarations and body: `METHOD name : type`, its declarations, its statements, then `END_METHOD` (in TwinCAT, a Method object of the block); there is no forward `METHOD name : type;` line; the body of this POU is not compiled")
+            } else {
                 Diagnostic::error(
                     code::E0100,
                     format!("`{}`: this PROPERTY cannot be read", p.name),
                 )
                 .at(Span::new(file, r.start, r.end))
                 .with_primary_label("PROPERTY without its type, its accessors or its END_PROPERTY")
-                .with_hint("write `PROPERTY name : type`, then `GET ... END_GET` and/or `SET ... END_SET`, then `END_PROPERTY`; the body of this POU is not compiled"),
-            );
+                .with_hint("write `PROPERTY name : type`, then `GET ... END_GET` and/or `SET ... END_SET`, then `END_PROPERTY`; the body of this POU is not compiled")
+            };
+            diags.push(d);
             blank(&mut text, p.body.clone());
             continue;
         }

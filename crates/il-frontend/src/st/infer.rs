@@ -216,6 +216,54 @@ impl Env<'_> {
             .map(|p| elem_ref(p.ty, field.span))
     }
 
+    /// Whether `p`'s type is unknown because a part of it is of a library-qualified type that
+    /// nothing declares (`pos.v` with `pos : Lib.POS_REF`: the qualifier of a library ladderc
+    /// provides is gone by now, `st::qualifiers`, so any other got its E1032): that error is the
+    /// cause, not `p`'s use. (An unqualified name may still be a type that ladderc adds later,
+    /// `AXIS_REF`: not judged here.)
+    pub fn of_unknown_type(&self, p: &Place) -> bool {
+        let PlaceBase::Name(n) = &p.base else {
+            return false;
+        };
+        let Some(mut t) = self.var_type(n) else {
+            return false;
+        };
+        let unknown = |t: &TypeRef| match self.resolve(t) {
+            TypeRef::Named(n) => {
+                (n.name.contains('.') || n.name.starts_with("__"))
+                    && Elementary::from_name(&n.name).is_none()
+                    && !n.is("STRING")
+                    && !n.is("WSTRING")
+                    && self.decls.type_decl(&n.name).is_none()
+                    && self.decls.pou(&n.name).is_none()
+                    && StdFb::from_name(&n.name).is_none()
+            }
+            _ => false,
+        };
+        for acc in &p.accessors {
+            if unknown(&t) {
+                return true;
+            }
+            t = self.unreference(t);
+            t = match acc {
+                Accessor::Field(f) => match self.member(&t, f) {
+                    Some(t) => t,
+                    None => return false,
+                },
+                Accessor::Index(_) => match self.resolve(&t) {
+                    TypeRef::Array { element, .. } => *element,
+                    _ => return false,
+                },
+                Accessor::Deref(_) => match self.resolve(&t) {
+                    TypeRef::Ref { target, .. } => *target,
+                    _ => return false,
+                },
+                Accessor::Call { .. } => return false,
+            };
+        }
+        unknown(&t)
+    }
+
     /// The type of a place, or `None` when some part of it is unknown.
     pub fn place_type(&self, p: &Place) -> Option<TypeRef> {
         if let Some((t, _)) = self.qualified_enum_value(p) {

@@ -294,10 +294,17 @@ pub fn flatten(
                 Some(None) => Vec::new(),
                 None => vec![key.clone()],
             };
-            let implements = levels
-                .iter()
-                .flat_map(|k| classes[k].oop.implements.iter().cloned())
-                .collect();
+            // (a block whose EXTENDS chain is broken keeps its own IMPLEMENTS: it is not
+            // compiled, E0330 says why, and its instances given to its interfaces report nothing
+            // more, as an ABSTRACT block's)
+            let implements = if levels.is_empty() {
+                c.oop.implements.clone()
+            } else {
+                levels
+                    .iter()
+                    .flat_map(|k| classes[k].oop.implements.iter().cloned())
+                    .collect()
+            };
             (
                 c.name.clone(),
                 c.oop.is_abstract || levels.is_empty(),

@@ -27,7 +27,8 @@ enum Raw {
     // overflow the stack.
     #[regex(r"//[^\r\n]*", allow_greedy = true)]
     LineComment,
-    #[regex(r"[A-Za-z_][A-Za-z0-9_]*")]
+    // letters beyond ASCII are read into the word (reported once per name: E1089)
+    #[regex(r"[A-Za-z_\p{L}][A-Za-z0-9_\p{L}\p{N}]*")]
     Word,
     #[regex(r"[A-Za-z_][A-Za-z0-9_]*#", prefixed)]
     Prefixed(Option<TimeValue>),
@@ -324,6 +325,8 @@ pub struct Token {
 pub enum Problem {
     /// A character that starts no token.
     UnexpectedChar(Range<usize>),
+    /// A name with letters beyond ASCII (`Мотор`): read as a name, reported (E1089).
+    NonAsciiName(Range<usize>),
     /// `(*` or `{` never closed.
     UnterminatedComment(Range<usize>),
     /// A string without its closing quote.
@@ -354,6 +357,10 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
     while let Some(r) = lx.next() {
         let range = lx.span();
         let tok = match r {
+            Ok(Raw::Word) if !lx.slice().is_ascii() => {
+                problems.push(Problem::NonAsciiName(range.clone()));
+                Tok::Ident
+            }
             Ok(Raw::Word) => match keyword(lx.slice()) {
                 Some(k) => Tok::Kw(k),
                 None => Tok::Ident,
@@ -849,6 +856,20 @@ pub fn no_seconds_diagnostic(span: crate::Span, text: &str) -> diagnostics::Diag
     )
     .at(span)
     .with_hint("IEC 61131-3 requires the seconds (`TOD#12:00:00`, `DT#1970-01-01-00:00:00`); add `:00` to silence this warning")
+}
+
+/// E1089 for a name with letters beyond ASCII (`Мотор`, `Motor_ä`): IEC 61131-3 names are letters,
+/// digits and `_` of ISO 646; CODESYS 3 accepts international letters. The name is read as a name
+/// (its other uses report nothing more) and [`diagnostics::Diagnostics`] keeps one E1089 per name
+/// and file.
+pub fn non_ascii_name_diagnostic(span: crate::Span, name: &str) -> diagnostics::Diagnostic {
+    use diagnostics::{code, Diagnostic};
+    Diagnostic::error(
+        code::E1089,
+        format!("the name `{name}` has letters beyond ASCII: not supported"),
+    )
+    .at(span)
+    .with_hint("IEC 61131-3 names are ASCII letters, digits and `_` (CODESYS 3 also accepts international letters): rename it, e.g. `Motor` for `Мотор` (reported once per name and file)")
 }
 
 /// A pragma's text on one line, at most 60 characters (cut at a character boundary).

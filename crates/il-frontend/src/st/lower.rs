@@ -2543,6 +2543,11 @@ impl<'d> PouLowering<'d> {
                 ..
             }] => {
                 let env = self.env();
+                if env.of_unknown_type(p) {
+                    // (`pos.v` with `pos` of a type nothing declares: that type's error says it)
+                    self.poisoned = true;
+                    return int_lit(0, span);
+                }
                 match env.place_type(p).map(|t| env.resolve(&t)) {
                     Some(TypeRef::Array { dims, .. }) => {
                         if let ExprKind::Literal(Literal {

@@ -235,6 +235,13 @@ impl<'s, 'd> Parser<'s, 'd> {
                     .push(super::lexer::flat_comment_diagnostic(whole));
                 return;
             }
+            Problem::NonAsciiName(r) => {
+                let span = self.span(r.start, r.end);
+                let name = self.src[r].to_string();
+                self.diags
+                    .push(super::lexer::non_ascii_name_diagnostic(span, &name));
+                return;
+            }
             Problem::UnexpectedChar(r) => {
                 let c = self.src[r.clone()].chars().next().unwrap_or(' ');
                 (
@@ -718,6 +725,17 @@ impl<'s, 'd> Parser<'s, 'd> {
             {
                 return self.nested_pou(start);
             }
+            // `VAR_TEMP k : REAL; END_VAR` written among the statements: one error, the block
+            // skipped to its END_VAR (before: one error per declaration line, one at END_VAR and
+            // a false W1426 for `k : REAL;` read as a jump label)
+            Tok::Ident
+                if !matches!(
+                    self.peek_at(1),
+                    Tok::Assign | Tok::LParen | Tok::Dot | Tok::LBracket | Tok::Caret | Tok::Colon
+                ) && is_var_keyword(self.text(self.cur())) =>
+            {
+                return self.decl_block_in_body(start);
+            }
             // `START:` (a jump label, CODESYS and TwinCAT): a statement of its own, no `;`
             Tok::Ident if matches!(self.peek_at(1), Tok::Colon) => {
                 let label = self.ident(self.cur());
@@ -823,6 +841,28 @@ impl<'s, 'd> Parser<'s, 'd> {
 
     /// A POU declared inside a body, its keyword the current token: one E0106 at the keyword,
     /// then every token up to its `END_...` (or the end of the text) skipped; an empty statement.
+    fn decl_block_in_body(&mut self, start: usize) -> Option<Stmt> {
+        let kw = self.text(self.cur()).to_ascii_uppercase();
+        self.error_here(
+            code::E0106,
+            format!("a declaration block `{kw} ... END_VAR` after the statements"),
+            "IEC 61131-3 writes a POU's declarations before its body (CODESYS and TwinCAT too): move the block before the first statement",
+        );
+        while !self.at(&Tok::Eof) {
+            let t = self.bump();
+            if self.text(&t).eq_ignore_ascii_case("END_VAR") {
+                break;
+            }
+        }
+        if self.at(&Tok::Semi) {
+            self.bump();
+        }
+        Some(Stmt {
+            kind: StmtKind::Empty,
+            span: self.span(start, self.prev_end()),
+        })
+    }
+
     fn nested_pou(&mut self, start: usize) -> Option<Stmt> {
         let kw = self.text(self.cur()).to_ascii_uppercase();
         let name = self
@@ -2280,4 +2320,21 @@ fn reference_assign(target: Place, callee: &str, value: Expr, span: Span) -> Stm
             span,
         },
     }
+}
+
+/// Whether `word` opens a block of variable declarations (`VAR`, `VAR_TEMP`, `VAR_INPUT`, ...).
+fn is_var_keyword(word: &str) -> bool {
+    [
+        "VAR",
+        "VAR_TEMP",
+        "VAR_INPUT",
+        "VAR_OUTPUT",
+        "VAR_IN_OUT",
+        "VAR_STAT",
+        "VAR_INST",
+        "VAR_EXTERNAL",
+        "VAR_GLOBAL",
+    ]
+    .iter()
+    .any(|k| word.eq_ignore_ascii_case(k))
 }
