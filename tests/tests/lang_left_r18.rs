@@ -203,9 +203,10 @@ fn an_any_inputs_pvalue_is_a_bounded_pointer_to_the_argument() {
     assert_eq!(column(&trace, "Main.arr[1]"), [2., 2., 0., 0.]);
 }
 
-/// What `.pValue` cannot point into is one located error each: a FUNCTION's variable and a
-/// VAR_TEMP live for one call (E0305, as `ADR` of them), a literal has no storage (E1068), a
-/// variable holding a pointer or an FB instance could be forged through its bytes (E1068).
+/// What `.pValue` cannot point into is one located error each: a VAR_TEMP lives for one call
+/// (E0305), a literal has no storage (E1068), a variable holding a pointer or an FB instance could
+/// be forged through its bytes (E1068). A FUNCTION's own variable given to an ANY input is its
+/// address during the call, as `ADR` of it is since round 27 (CODESYS; before: E0305).
 #[test]
 fn pvalue_of_an_argument_without_lasting_storage_is_refused() {
     let f = "FUNCTION F_Sum : DINT\nVAR_INPUT\n    Data : ANY;\nEND_VAR\nF_Sum := BYTE_TO_DINT(Data.pValue[0]);\nEND_FUNCTION\n\n";
@@ -220,7 +221,6 @@ fn pvalue_of_an_argument_without_lasting_storage_is_refused() {
     assert_eq!(
         lines,
         [
-            "temp.st:12:18: error[E0305]: a reference to `nLocal` is not allowed: the variables of a FUNCTION live for one call (IEC 61131-3, 6.4.4.10)",
             "temp.st:22:12: error[E0305]: a reference to `t` is not allowed: a VAR_TEMP variable lives for one call (IEC 61131-3, 6.4.4.10)",
         ]
     );
