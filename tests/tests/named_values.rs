@@ -91,10 +91,11 @@ fn named_values_on_a_non_integer_base_are_rejected() {
     );
 }
 
-/// The values keep the enumeration's semantics: under `{attribute 'strict'}`, adding to one, or
-/// storing an INT into the type and the type into an INT, are refused as for `(Low := 1, High :=
-/// 100)`; without it they count as their numbers, with one W1439 (CODESYS and TwinCAT;
-/// `tests/tests/codesys_loose_types_run.rs`).
+/// The values keep the enumeration's semantics: under `{attribute 'strict'}`, adding to one or
+/// storing an INT into the type are refused as for `(Low := 1, High := 100)`; storing the type into
+/// an INT is W1439 (Beckhoff's 'strict' forbids arithmetic and stores into the enumeration only;
+/// round 27, before E1006); without it they count as their numbers, with one W1439 (CODESYS and
+/// TwinCAT; `tests/tests/codesys_loose_types_run.rs`).
 #[test]
 fn named_values_refuse_arithmetic_and_base_type_stores() {
     let body = "TYPE Lvl : INT (Low := 1, High := 100); END_TYPE\n\
@@ -104,7 +105,7 @@ fn named_values_refuse_arithmetic_and_base_type_stores() {
     assert_eq!(
         heads,
         [
-            "arith.st:5:1: error[E1006]: cannot store Lvl into INT",
+            "arith.st:5:1: warning[W1439]: the enumeration Lvl used as an integer: IEC 61131-3 enumerations are no numbers (its other uses in this POU are not reported)",
             "arith.st:6:1: error[E1006]: cannot store an integer literal into Lvl",
             "arith.st:7:6: error[E1004]: ADD is not defined for Lvl",
         ]

@@ -303,6 +303,11 @@ pub fn uncalled_spans(linked: &Linked) -> Vec<crate::Span> {
             if linked.linked.contains(&(pou.clone(), a.name.key())) {
                 continue;
             }
+            // a plain ACTION is checked where its own POU calls it (inlined there, so [`link`]
+            // never links it); only METHODs and property accessors are checked on their own
+            if a.method_inputs.is_none() {
+                continue;
+            }
             let spans: Vec<crate::Span> = a
                 .body
                 .iter()

@@ -1817,6 +1817,14 @@ impl<'d> PouLowering<'d> {
                     if !matches!(a.value.kind, ExprKind::Place(_))
                         && plain_in_outs.contains(&name.key()) =>
                 {
+                    // (a property given there already has its E0338: one cause, one error)
+                    let property = diags
+                        .iter()
+                        .any(|d| d.code == code::E0338 && d.span == Some(a.value.span));
+                    if property {
+                        self.poisoned = true;
+                        continue;
+                    }
                     diags.push(
                         Diagnostic::error(
                             code::E1088,
