@@ -345,7 +345,7 @@ fn declare_classes(
     keys: &[String],
     chains: &HashMap<String, Option<Vec<String>>>,
 ) -> super::base_view::Derived {
-    use crate::ast::{Initializer, Operand, RefKind, VarDecl};
+    use crate::ast::{Initializer, Operand, VarDecl};
     let id = |k: &str| keys.iter().position(|x| x == k).map_or(0, |p| p as u32 + 1);
     let mut derived: super::base_view::Derived = HashMap::new();
     // each member's chain, root first
@@ -394,35 +394,7 @@ fn declare_classes(
             }
         }
         // VAR_IN_OUT of a base: a REFERENCE TO it, which a derived instance may be passed to
-        let mut converted = Vec::new();
-        let mut blocks = Vec::with_capacity(p.var_blocks.len());
-        for b in std::mem::take(&mut p.var_blocks) {
-            let is_base =
-                |v: &VarDecl| matches!(&v.ty, TypeRef::Named(n) if derived.contains_key(&n.key()));
-            if b.kind != VarKind::InOut || !b.vars.iter().any(is_base) {
-                blocks.push(b);
-                continue;
-            }
-            for v in b.vars.iter().cloned() {
-                let mut nb = b.clone();
-                if is_base(&v) {
-                    converted.push(v.name.key());
-                    let span = v.span;
-                    nb.kind = VarKind::Input;
-                    nb.vars = vec![VarDecl {
-                        ty: TypeRef::Ref {
-                            kind: RefKind::Reference,
-                            target: Box::new(v.ty.clone()),
-                            span,
-                        },
-                        ..v
-                    }];
-                } else {
-                    nb.vars = vec![v];
-                }
-                blocks.push(nb);
-            }
-        }
+        let (blocks, converted) = in_outs_by_reference(std::mem::take(&mut p.var_blocks), &derived);
         p.var_blocks = blocks;
         if !converted.is_empty() {
             by_reference.insert(key, converted);
@@ -447,25 +419,30 @@ fn declare_classes(
 /// to it, and the method's calls through it run the derived block's overrides (IEC 61131-3 ed. 3
 /// 6.6.5; before round 27: E1012 naming the hidden `__M_<M>_X`).
 fn method_in_outs_by_reference(m: &mut PendingMethod, derived: &super::base_view::Derived) {
+    m.blocks = in_outs_by_reference(std::mem::take(&mut m.blocks), derived).0;
+}
+
+/// `blocks` with each VAR_IN_OUT whose type is a block of `derived` (one that has derived blocks)
+/// made a `VAR_INPUT x : REFERENCE TO B` in a block of its own, and the names so converted
+/// (upper-case).
+fn in_outs_by_reference(
+    blocks: Vec<VarBlock>,
+    derived: &super::base_view::Derived,
+) -> (Vec<VarBlock>, Vec<String>) {
     use crate::ast::{RefKind, VarDecl};
     let is_base =
         |v: &VarDecl| matches!(&v.ty, TypeRef::Named(n) if derived.contains_key(&n.key()));
-    if !m
-        .blocks
-        .iter()
-        .any(|b| b.kind == VarKind::InOut && b.vars.iter().any(is_base))
-    {
-        return;
-    }
-    let mut blocks = Vec::with_capacity(m.blocks.len());
-    for b in std::mem::take(&mut m.blocks) {
+    let mut converted = Vec::new();
+    let mut out = Vec::with_capacity(blocks.len());
+    for b in blocks {
         if b.kind != VarKind::InOut || !b.vars.iter().any(is_base) {
-            blocks.push(b);
+            out.push(b);
             continue;
         }
         for v in b.vars.iter().cloned() {
             let mut nb = b.clone();
             if is_base(&v) {
+                converted.push(v.name.key());
                 let span = v.span;
                 nb.kind = VarKind::Input;
                 nb.vars = vec![VarDecl {
@@ -479,10 +456,10 @@ fn method_in_outs_by_reference(m: &mut PendingMethod, derived: &super::base_view
             } else {
                 nb.vars = vec![v];
             }
-            blocks.push(nb);
+            out.push(nb);
         }
     }
-    m.blocks = blocks;
+    (out, converted)
 }
 
 /// In the IL body of `p`, `CAL inst(x := v)` where `x` is a converted VAR_IN_OUT of `inst`'s block
