@@ -12,8 +12,11 @@
 //!
 //! Invariants: sections nest; inside a section not compiled no define changes; a `#if` /
 //! `#elif` compiles none of its sections (no branch chosen by guess). Names are case-sensitive as
-//! in C. A directive is only recognised at the start of a line (after blanks).
+//! in C. A directive is only recognised at the start of a line (after blanks), and never inside a
+//! comment or a string (comments have no meaning, IEC 61131-3 ed. 3 6.1.5: a `#ifdef` line inside
+//! `(* ... *)` is text of the comment).
 
+use crate::lexer::{self, CommentEnd};
 use crate::{FileId, Span};
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
 use std::collections::HashSet;
@@ -33,7 +36,7 @@ struct Open {
 
 /// See the module documentation.
 pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Option<String> {
-    let mut lines = Vec::new();
+    let mut lines: Vec<(usize, &str)> = Vec::new();
     let mut pos = 0;
     for line in src.split_inclusive('\n') {
         lines.push((pos, line));
@@ -53,20 +56,46 @@ pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Opti
     if !lines.iter().any(|(_, l)| directive(l).is_some()) {
         return None;
     }
+    // a line whose `#` is inside a comment or a string is never a directive
+    let quiet = quiet_ranges(src);
+    fn outside<'a>(
+        quiet: &[std::ops::Range<usize>],
+        start: usize,
+        line: &'a str,
+    ) -> Option<(usize, &'a str, &'a str)> {
+        directive(line).filter(|(lead, _, _)| {
+            let at = start + lead;
+            !quiet.iter().any(|r| r.start < at && at < r.end)
+        })
+    }
+    if !lines
+        .iter()
+        .any(|&(start, l)| outside(&quiet, start, l).is_some())
+    {
+        return None;
+    }
     let mut text = src.to_string();
     let blank = |text: &mut String, start: usize, line: &str| {
+        // One space per byte, so that a character beyond ASCII keeps its width in bytes and
+        // every later position (and the line's end) stays where it was.
         let b: String = line
             .chars()
-            .map(|c| if matches!(c, '\n' | '\r') { c } else { ' ' })
+            .flat_map(|c| {
+                let keep = matches!(c, '\n' | '\r');
+                std::iter::repeat_n(
+                    if keep { c } else { ' ' },
+                    if keep { 1 } else { c.len_utf8() },
+                )
+            })
             .collect();
         text.replace_range(start..start + line.len(), &b);
     };
     let mut defines: HashSet<String> = HashSet::new();
     let mut noted: HashSet<String> = HashSet::new();
     let mut stack: Vec<Open> = Vec::new();
-    for (start, line) in lines {
+    for &(start, line) in &lines {
         let on = stack.last().is_none_or(|o| o.on);
-        let Some((lead, word, arg)) = directive(line) else {
+        let Some((lead, word, arg)) = outside(&quiet, start, line) else {
             if !on {
                 blank(&mut text, start, line);
             }
@@ -155,13 +184,60 @@ pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Opti
         }
         blank(&mut text, start, line);
     }
+    // An unclosed `#ifdef` says nothing certain about the text after it: compile that text as if
+    // the directive were not there (its E1058 alone, not a missing `END_VAR` of a blanked block).
+    if let Some(first) = stack.first().map(|o| o.at.1) {
+        for &(start, line) in lines.iter().filter(|(start, _)| *start >= first) {
+            if outside(&quiet, start, line).is_none() {
+                text.replace_range(start..start + line.len(), line);
+            }
+        }
+    }
     for o in stack {
         diags.push(
             Diagnostic::error(code::E1058, "`#ifdef` without its `#endif`")
                 .at(Span::new(file, o.at.0, o.at.1))
                 .with_primary_label("opened here")
-                .with_hint("close the section with `#endif`; everything after it is read as if the section ended at the end of the text"),
+                .with_hint("close the section with `#endif`; the text after it is compiled as if the line were not there"),
         );
     }
     Some(text)
+}
+
+/// The byte ranges of the comments (`(* *)` and `/* */` nested as the ST lexer reads them, `//` to
+/// the end of the line) and string literals of an ST text, each from its opening to its end.
+fn quiet_ranges(src: &str) -> Vec<std::ops::Range<usize>> {
+    let b = src.as_bytes();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        let rest = &src[i..];
+        let len = if let Some(body) = rest.strip_prefix("(*") {
+            match lexer::comment_rest(body) {
+                (n, CommentEnd::Closed { .. }) => 2 + n,
+                (n, CommentEnd::Unterminated) => 2 + lexer::flat_comment_len(body).unwrap_or(n),
+            }
+        } else if let Some(body) = rest.strip_prefix("/*") {
+            2 + lexer::slash_comment_rest(body).0
+        } else if rest.starts_with("//") {
+            rest.find('\n').unwrap_or(rest.len())
+        } else if b[i] == b'\'' || b[i] == b'"' {
+            // a string ends at its own quote (`$'` is an escaped quote) or, unclosed, at the line's end
+            let q = b[i];
+            let mut k = 1;
+            while k < rest.len() && b[i + k] != q && b[i + k] != b'\n' {
+                k += if b[i + k] == b'$' { 2 } else { 1 };
+            }
+            (k + 1).min(rest.len())
+        } else {
+            0
+        };
+        if len > 0 {
+            out.push(i..i + len);
+            i += len;
+        } else {
+            i += rest.chars().next().map_or(1, char::len_utf8);
+        }
+    }
+    out
 }
