@@ -1342,6 +1342,20 @@ fn after_string_keyword(before: &str) -> bool {
             .is_some_and(|e| e.is_integer())
 }
 
+/// The width in bits of an elementary type named `name` (a structure member's, for its relative
+/// location); `None` for another type.
+fn elementary_bits(name: &str) -> Option<u64> {
+    let n = name.to_ascii_uppercase();
+    Some(match n.as_str() {
+        "BOOL" => 1,
+        "BYTE" | "SINT" | "USINT" | "CHAR" => 8,
+        "WORD" | "INT" | "UINT" | "WCHAR" => 16,
+        "DWORD" | "DINT" | "UDINT" | "REAL" => 32,
+        "LWORD" | "LINT" | "ULINT" | "LREAL" => 64,
+        _ => return None,
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1639,18 +1653,4 @@ mod tests {
             assert_eq!(word_of_mod(src), Some(Word::Mod), "{src:?}");
         }
     }
-}
-
-/// The width in bits of an elementary type named `name` (a structure member's, for its relative
-/// location); `None` for another type.
-fn elementary_bits(name: &str) -> Option<u64> {
-    let n = name.to_ascii_uppercase();
-    Some(match n.as_str() {
-        "BOOL" => 1,
-        "BYTE" | "SINT" | "USINT" | "CHAR" => 8,
-        "WORD" | "INT" | "UINT" | "WCHAR" => 16,
-        "DWORD" | "DINT" | "UDINT" | "REAL" => 32,
-        "LWORD" | "LINT" | "ULINT" | "LREAL" => 64,
-        _ => return None,
-    })
 }

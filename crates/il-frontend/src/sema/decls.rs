@@ -2162,6 +2162,20 @@ fn struct_declaration_order(units: &[CompilationUnit]) -> Vec<&ast::TypeDecl> {
     order
 }
 
+/// CODESYS's pseudo types `__XINT`, `__UXINT`, `__XWORD` (and TwinCAT's `XINT`, `UXINT`, `XWORD`),
+/// a user type of that name aside: pointer-sized integers, LINT, ULINT and LWORD on a 64-bit target
+/// (CODESYS help "Data Type: __UXINT, __XINT, __XWORD"; Infosys "Special data types XINT, UXINT,
+/// XWORD and PVOID"). ladderc's programs run on 64-bit hosts, so the 64-bit widths.
+fn pointer_sized(name: &str) -> Option<Elementary> {
+    let upper = name.to_ascii_uppercase();
+    match upper.strip_prefix("__").unwrap_or(&upper) {
+        "XINT" => Some(Elementary::Lint),
+        "UXINT" => Some(Elementary::Ulint),
+        "XWORD" => Some(Elementary::Lword),
+        _ => None,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -2200,19 +2214,5 @@ mod tests {
         }
         assert_eq!(reserved_name("End_If"), Some("a keyword"));
         assert_eq!(reserved_name("a0"), None);
-    }
-}
-
-/// CODESYS's pseudo types `__XINT`, `__UXINT`, `__XWORD` (and TwinCAT's `XINT`, `UXINT`, `XWORD`),
-/// a user type of that name aside: pointer-sized integers, LINT, ULINT and LWORD on a 64-bit target
-/// (CODESYS help "Data Type: __UXINT, __XINT, __XWORD"; Infosys "Special data types XINT, UXINT,
-/// XWORD and PVOID"). ladderc's programs run on 64-bit hosts, so the 64-bit widths.
-fn pointer_sized(name: &str) -> Option<Elementary> {
-    let upper = name.to_ascii_uppercase();
-    match upper.strip_prefix("__").unwrap_or(&upper) {
-        "XINT" => Some(Elementary::Lint),
-        "UXINT" => Some(Elementary::Ulint),
-        "XWORD" => Some(Elementary::Lword),
-        _ => None,
     }
 }
