@@ -667,7 +667,8 @@ int main(int argc, char **argv) {
     if (ladderc_errors & LADDERC_ERR_MEM) fprintf(stderr, "runtime: memory function count beyond its variables (first: %s; clipped to their size)\n", ladderc_mem_site);
     if (ladderc_errors & LADDERC_ERR_POINTER) fprintf(stderr, "runtime: pointer outside its variable dereferenced (first: %s; zero read, write dropped)\n", ladderc_pointer_site);
     if (ladderc_errors & LADDERC_ERR_CHAR_INDEX)
-        fprintf(stderr, "runtime: string index out of range (first: %s, index %lld outside 1..%lld; NUL read, write dropped)\n",
-                ladderc_char_index_site, (long long)ladderc_char_index_at[0], (long long)ladderc_char_index_at[1]);
+        fprintf(stderr, "runtime: string index out of range (first: %s, index %lld outside %lld..%lld; NUL read, write dropped)\n",
+                ladderc_char_index_site, (long long)ladderc_char_index_at[0], (long long)ladderc_char_index_at[1],
+                (long long)ladderc_char_index_at[2]);
     return 0;
 }

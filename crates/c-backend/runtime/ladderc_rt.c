@@ -13,7 +13,7 @@ const char *ladderc_null_ref_site = "";
 const char *ladderc_mem_site = "";
 const char *ladderc_pointer_site = "";
 const char *ladderc_char_index_site = "";
-int64_t ladderc_char_index_at[2];
+int64_t ladderc_char_index_at[3];
 const char *ladderc_bounds_site = "";
 int64_t ladderc_bounds_at[3];
 IEC_TIME ladderc_now = 0;

@@ -106,7 +106,7 @@ extern const char *ladderc_bounds_site;   /* where the first array index out of 
 extern int64_t ladderc_bounds_at[3];       /* that index, and the lower and upper bounds it missed */
 extern const char *ladderc_pointer_site;  /* where the first pointer outside its variable was dereferenced */
 extern const char *ladderc_char_index_site; /* where the first character index outside its string was used */
-extern int64_t ladderc_char_index_at[2];    /* that index and the string's length then */
+extern int64_t ladderc_char_index_at[3];    /* that index and the range it was outside then */
 
 /* The loop guard. Every jump back in the generated code (the end of a WHILE, REPEAT or FOR pass, an IL
  * jump to an earlier label) passes LADDERC_LOOP_GUARD(file, start, end) with the source span of the
@@ -383,11 +383,48 @@ static inline int ladderc_char_index_ok(int64_t i, size_t len, const char *site)
     if (!(ladderc_errors & LADDERC_ERR_CHAR_INDEX)) {
         ladderc_char_index_site = site;
         ladderc_char_index_at[0] = i;
-        ladderc_char_index_at[1] = (int64_t)len;
+        ladderc_char_index_at[1] = 1;
+        ladderc_char_index_at[2] = (int64_t)len;
     }
     ladderc_errors |= LADDERC_ERR_CHAR_INDEX;
     return 0;
 }
+/* CODESYS/TwinCAT `s[i]` of a STRING (a BYTE) or a WSTRING (a WORD): the code at offset i, 0 the
+ * first, of the string's `cap + 1` places (its declared length and the terminating NUL). Reading at
+ * LEN(s) or beyond gives 0 (ladderc keeps the places after the terminator NUL); writing 0 before
+ * LEN(s) ends the string there, writing a code at LEN(s) appends it, elsewhere after the end it is
+ * dropped (the string still ends at its first NUL). An offset outside 0..cap (a code other than 0
+ * at cap itself: no room for the terminator) sets LADDERC_ERR_CHAR_INDEX and is a 0 read, a
+ * dropped write. */
+static inline int ladderc_byte_index_ok(int64_t i, size_t cap, const char *site) {
+    if (i >= 0 && i <= (int64_t)cap) return 1;
+    if (!(ladderc_errors & LADDERC_ERR_CHAR_INDEX)) {
+        ladderc_char_index_site = site;
+        ladderc_char_index_at[0] = i;
+        ladderc_char_index_at[1] = 0;
+        ladderc_char_index_at[2] = (int64_t)cap;
+    }
+    ladderc_errors |= LADDERC_ERR_CHAR_INDEX;
+    return 0;
+}
+#define LADDERC_STR_BYTE_FNS(NAME, STR, CODE)                                                        \
+    static inline CODE NAME##_get(const STR *s, int64_t i, size_t cap, const char *site) {           \
+        if (!ladderc_byte_index_ok(i, cap, site) || i >= (int64_t)s->len) return 0;                 \
+        return (CODE)s->data[i];                                                                     \
+    }                                                                                                \
+    static inline void NAME##_set(STR *s, int64_t i, size_t cap, CODE v, const char *site) {         \
+        if (!ladderc_byte_index_ok(i, v != 0 ? cap - 1 : cap, site)) return;                        \
+        if (i < (int64_t)s->len) {                                                                   \
+            s->data[i] = v;                                                                          \
+            if (v == 0) s->len = (uint16_t)i;                                                        \
+        } else if (i == (int64_t)s->len && v != 0) {                                                 \
+            s->data[i] = v;                                                                          \
+            s->len = (uint16_t)(i + 1);                                                              \
+            s->data[i + 1] = 0;                                                                      \
+        }                                                                                            \
+    }
+LADDERC_STR_BYTE_FNS(ladderc_str_byte, IEC_STRING, IEC_BYTE)
+LADDERC_STR_BYTE_FNS(ladderc_wstr_word, IEC_WSTRING, IEC_WORD)
 static inline IEC_CHAR *ladderc_char_at(IEC_STRING *s, int64_t i, const char *site) {
     static IEC_CHAR scratch;
     if (!ladderc_char_index_ok(i, s->len, site)) {

@@ -118,6 +118,10 @@ pub struct Layout<'s> {
     /// Runs of plain lines pass on as one [`Tok::Lines`] ([`Layout::line_run`]); off, each line
     /// passes on as its own line token and line end (the tests compare the two).
     line_runs: bool,
+    /// The members of the innermost `STRUCT` read so far that have a relative location
+    /// (`x AT %B0 : WORD;`, [`Layout::relative_location`]): their first bit, their bits (`None`
+    /// for a type whose size the layout does not know) and the location's local byte range.
+    relative: Vec<(u64, Option<u64>, usize, usize)>,
 }
 
 /// The most lines one [`Tok::Lines`] carries (its list is 64 bytes a line).
@@ -138,6 +142,7 @@ impl<'s> Layout<'s> {
             base,
             diags: Vec::new(),
             out: VecDeque::new(),
+            relative: Vec::new(),
             stack: Vec::new(),
             pending_eol: None,
             prev: Last::Start,
@@ -374,8 +379,12 @@ impl<'s> Layout<'s> {
                         self.missing_type_semi(te, s, e);
                     }
                 }
-                Word::Struct if decl => self.stack.push(Frame::Struct(s, e)),
+                Word::Struct if decl => {
+                    self.relative.clear();
+                    self.stack.push(Frame::Struct(s, e));
+                }
                 Word::EndStruct => {
+                    self.overlapping_locations();
                     if matches!(self.stack.last(), Some(Frame::Struct(..))) && !self.decl_start {
                         self.missing_decl_semi("END_STRUCT");
                     }
@@ -844,7 +853,101 @@ impl<'s> Layout<'s> {
                     continue;
                 }
             }
+            if matches!(tok, Tok::Word(Word::At))
+                && matches!(self.stack.last(), Some(Frame::Struct(..)))
+                && self.relative_location(e)
+            {
+                continue;
+            }
             self.emit(s, tok, e);
+        }
+    }
+
+    /// After `AT` (ending at `e`) in a `STRUCT`: a relative location of the member (IEC 61131-3
+    /// ed. 3, 6.4.4.2 and Table 11, "structure with relative location of elements": `x AT %B0 :
+    /// WORD;`, `b AT %X4.1 : BOOL;`, as SIMATIC AX's I/O layouts write them), the member's byte
+    /// (and bit) offset in the structure. Each member is its own variable here: without the
+    /// keyword OVERLAP members do not share bits, so the values read and written are those of the
+    /// same structure without the locations. The `AT` and the location are skipped (`true`); the
+    /// location is kept for [`Layout::overlapping_locations`].
+    fn relative_location(&mut self, e: usize) -> bool {
+        let rest = &self.src[e..];
+        let blanks = rest.len() - rest.trim_start().len();
+        let text = &rest[blanks..];
+        let Some(loc) = text.strip_prefix('%') else {
+            return false;
+        };
+        let size = match loc.bytes().next().map(|b| b.to_ascii_uppercase()) {
+            Some(b @ (b'X' | b'B' | b'W' | b'D' | b'L')) => b,
+            _ => return false,
+        };
+        let digits = |t: &str| t.bytes().take_while(u8::is_ascii_digit).count();
+        let body = &loc[1..];
+        let n = digits(body);
+        if n == 0 {
+            return false;
+        }
+        let Ok(byte) = body[..n].parse::<u64>() else {
+            return false;
+        };
+        let mut len = 2 + n;
+        let mut bit = 0;
+        if let Some(after) = body[n..].strip_prefix('.') {
+            let m = digits(after);
+            if m == 0 || size != b'X' {
+                return false;
+            }
+            bit = after[..m].parse::<u64>().unwrap_or(8);
+            if bit > 7 {
+                return false;
+            }
+            len += 1 + m;
+        }
+        if text[len..]
+            .bytes()
+            .next()
+            .is_some_and(|b| b.is_ascii_alphanumeric() || b == b'_' || b == b'.')
+        {
+            return false;
+        }
+        // the member's type, when it is elementary: its width in bits
+        let after = text[len..].trim_start();
+        let ty = after.strip_prefix(':').map(str::trim_start).unwrap_or("");
+        let name_len = ty
+            .bytes()
+            .take_while(|b| b.is_ascii_alphanumeric() || *b == b'_')
+            .count();
+        let bits = elementary_bits(&ty[..name_len]);
+        let at = e + blanks;
+        self.relative.push((byte * 8 + bit, bits, at, at + len));
+        self.lex.bump(blanks + len);
+        true
+    }
+
+    /// At `END_STRUCT`: E0006 for a member whose relative location shares bits with an earlier
+    /// member's (IEC 61131-3 ed. 3: only a structure declared `OVERLAP` may overlap its members).
+    fn overlapping_locations(&mut self) {
+        let members = std::mem::take(&mut self.relative);
+        for (k, &(start, bits, s, e)) in members.iter().enumerate() {
+            let Some(bits) = bits else { continue };
+            let clash = members[..k]
+                .iter()
+                .find(|&&(o, ob, _, _)| ob.is_some_and(|ob| start < o + ob && o < start + bits));
+            if let Some(&(_, _, os, oe)) = clash {
+                let d = Diagnostic::error(
+                    code::E0006,
+                    format!(
+                        "relative location `{}` overlaps the member at `{}`",
+                        &self.src[s..e],
+                        &self.src[os..oe]
+                    ),
+                )
+                .at(self.span(s, e))
+                .with_hint(
+                    "members of a STRUCT without OVERLAP do not share bytes (IEC 61131-3 ed. 3, Table 11); move the member past the other one's bytes",
+                );
+                self.diags.push(d);
+            }
         }
     }
 
@@ -1237,6 +1340,20 @@ fn after_string_keyword(before: &str) -> bool {
         // a subrange's bounds (`INT(cMin..cMax - 1)`): an elementary integer type's name
         || crate::sema::Elementary::from_name(&word.to_ascii_uppercase())
             .is_some_and(|e| e.is_integer())
+}
+
+/// The width in bits of an elementary type named `name` (a structure member's, for its relative
+/// location); `None` for another type.
+fn elementary_bits(name: &str) -> Option<u64> {
+    let n = name.to_ascii_uppercase();
+    Some(match n.as_str() {
+        "BOOL" => 1,
+        "BYTE" | "SINT" | "USINT" | "CHAR" => 8,
+        "WORD" | "INT" | "UINT" | "WCHAR" => 16,
+        "DWORD" | "DINT" | "UDINT" | "REAL" => 32,
+        "LWORD" | "LINT" | "ULINT" | "LREAL" => 64,
+        _ => return None,
+    })
 }
 
 #[cfg(test)]

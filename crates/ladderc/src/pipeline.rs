@@ -123,6 +123,10 @@ pub struct Session {
     /// The files read so far that are TwinCAT 3 objects (`.TcPOU` ...), known to the semantic
     /// analysis ([`il_frontend::sema::TwinCatFiles`]).
     pub twincat_files: Vec<diagnostics::FileId>,
+    /// The files read so far that were written for CODESYS or TwinCAT (TwinCAT 3 objects, CODESYS
+    /// V2.3 exports and objects, CODESYS's PLCopen XML), known to the semantic analysis
+    /// ([`il_frontend::sema::CodesysFiles`]).
+    pub codesys_files: Vec<diagnostics::FileId>,
     /// B&R library data types not compiled as they are made of stub blocks
     /// ([`crate::split_blocks::drop_stub_types`]): their uses' E1003 name the stub.
     stub_types: Vec<crate::split_blocks::StubType>,
@@ -229,6 +233,7 @@ impl Session {
             task_cycle_ms: None,
             libraries: Vec::new(),
             twincat_files: Vec::new(),
+            codesys_files: Vec::new(),
             stub_types: Vec::new(),
             linked_actions: Default::default(),
         }
@@ -526,6 +531,9 @@ impl Session {
             // for a CODESYS V2.3 export, `.EXP`: a documented input whose language is its own)
             let v23_export =
                 v23_text.is_some() || p.extension().is_some_and(|x| x.eq_ignore_ascii_case("exp"));
+            if v23_export {
+                self.codesys_files.push(file);
+            }
             if detected && !v23_export && openplc_v4_json_body(src).is_none() {
                 self.diags.push(
                     Diagnostic::new(
@@ -550,7 +558,10 @@ impl Session {
                     self.diags.push(*d);
                     continue;
                 }
-                Some(Ok(text)) => Some(text),
+                Some(Ok(text)) => {
+                    self.codesys_files.push(file);
+                    Some(text)
+                }
                 None => None,
             };
             // a TwinCAT 3 object file (`<TcPlcObject>` root): its texts as an ST file, or a task
@@ -580,6 +591,7 @@ impl Session {
                     twincat_units.resize(units.len(), false);
                     twincat_units.push(true);
                     self.twincat_files.push(file);
+                    self.codesys_files.push(file);
                     Some(text)
                 }
                 None => None,
@@ -594,6 +606,9 @@ impl Session {
                         .unwrap_or(src.as_str()),
                 ),
             };
+            if file_lang == Lang::Xml && is_codesys_xml(src) {
+                self.codesys_files.push(file);
+            }
             if file_lang == Lang::Xml && defer_xml {
                 deferred_xml.push((units.len(), file, beremiz_dir.clone()));
                 units.push(il_frontend::ast::CompilationUnit::default());
@@ -1272,7 +1287,7 @@ impl Session {
             Vec::new()
         };
         let model = self.analyze(&checked);
-        self.check_uncalled(&checked);
+        self.check_uncalled(&checked, uses_blocks);
         if self.diags.has_errors() {
             if uses_blocks && opts.axes.is_none() && axes.axes.is_empty() && axes.groups.is_empty()
             {
@@ -1297,15 +1312,20 @@ impl Session {
     /// were never analysed): a second semantic analysis of `units` with them linked into their
     /// POUs ([`il_frontend::actions::with_uncalled`]), whose diagnostics inside their bodies are
     /// kept when not already reported. Nothing of it is compiled.
-    fn check_uncalled(&mut self, units: &[CompilationUnit]) {
+    fn check_uncalled(&mut self, units: &[CompilationUnit], uses_blocks: bool) {
         let linked = std::mem::take(&mut self.linked_actions);
         let mut local = Diagnostics::new();
-        let Some(with) = il_frontend::actions::with_uncalled(units, &linked, &mut local) else {
+        let Some(mut with) = il_frontend::actions::with_uncalled(units, &linked, &mut local) else {
             return;
         };
+        if uses_blocks {
+            // the AXIS_REF members the METHODs read (`Axis.NcToPlc.ActPos`), as in the bodies
+            crate::tc2_mc2::read_axis_members(&mut with, &mut local);
+        }
         let spans = il_frontend::actions::uncalled_spans(&linked);
         {
             let _twincat = il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
+            let _codesys = il_frontend::sema::CodesysFiles::set(self.codesys_files.iter().copied());
             il_frontend::sema::analyze_for_code(&with, &mut local);
         }
         let inside = |d: &Diagnostic| {
@@ -1347,6 +1367,7 @@ impl Session {
         let mut found = Diagnostics::new();
         {
             let _twincat = il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
+            let _codesys = il_frontend::sema::CodesysFiles::set(self.codesys_files.iter().copied());
             il_frontend::sema::analyze_for_code(units, &mut found);
         }
         // (a PLCopen block or an axis is declared by the block library, checked with it later)
@@ -1365,6 +1386,7 @@ impl Session {
 
     fn analyze(&mut self, units: &[CompilationUnit]) -> il_frontend::sema::Model {
         let _twincat = il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
+        let _codesys = il_frontend::sema::CodesysFiles::set(self.codesys_files.iter().copied());
         let model = if self.name_table {
             il_frontend::sema::analyze(units, &mut self.diags)
         } else {
@@ -1581,6 +1603,8 @@ impl Session {
                 let mut second = Diagnostics::new();
                 let _twincat =
                     il_frontend::sema::TwinCatFiles::set(self.twincat_files.iter().copied());
+                let _codesys =
+                    il_frontend::sema::CodesysFiles::set(self.codesys_files.iter().copied());
                 let m = if self.name_table {
                     il_frontend::sema::analyze(&lowered.all_units, &mut second)
                 } else {
@@ -1912,4 +1936,16 @@ struct WaitingFile {
     /// The constants its first parse found in its own POUs' `VAR CONSTANT` blocks (a bound may
     /// name one declared below it), offered to its parses again only.
     own: il_frontend::parser::Constants,
+}
+
+/// Whether a PLCopen XML text was exported by CODESYS (its `<fileHeader>` names the product:
+/// `productName="CODESYS"`, or the company 3S-Smart Software Solutions): its ST bodies follow
+/// CODESYS's meaning where it differs from IEC 61131-3 edition 3's ([`Session::codesys_files`]).
+fn is_codesys_xml(src: &str) -> bool {
+    let Some(at) = src.find("<fileHeader") else {
+        return false;
+    };
+    let header = &src[at..];
+    let header = &header[..header.find('>').unwrap_or(header.len())];
+    header.contains("CODESYS") || header.contains("3S-Smart Software Solutions")
 }

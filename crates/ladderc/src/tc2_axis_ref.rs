@@ -59,6 +59,8 @@ const COMPUTED: &[(&str, &str)] = &[
     ("NEGATIVEDIRECTION", "BOOL"),
     ("COUPLESTATE", "UDINT"),
     ("STATEDWORD", "DWORD"),
+    // SoftMotion's AXIS_REF_SM3.nAxisState, an SMC_AXIS_STATE (INT values)
+    ("NAXISSTATE", "INT"),
 ];
 
 /// The ST_AxisStatus names of [`STATUS`]'s entries, as Tc2_MC2 spells them.
@@ -447,7 +449,16 @@ pub fn read_members(p: &mut Pou, globals: &Axes, structs: &Structs, diags: &mut 
             }
         }
     }
-    crate::block_temps::add_hidden_vars(p, hidden);
+    // (read again for the METHODs checked on their own: the variables declared then are kept)
+    let declared: std::collections::HashSet<String> = p
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter().map(|v| v.name.key()))
+        .collect();
+    hidden.retain(|h| !declared.contains(&h.name.key()));
+    if !hidden.is_empty() {
+        crate::block_temps::add_hidden_vars(p, hidden);
+    }
     p.body.splice(0..0, prologue);
 }
 
@@ -690,6 +701,29 @@ fn member(
     axes.unqualify(&mut q);
     // the axis (`Axis`, `axisRefs[i]`, `GVL.axes[i].Axis`), its indexes, the members after it
     let (axis, index, rest) = axes.find(&q)?;
+    // CODESYS SoftMotion's AXIS_REF_SM3 (ladderc's AXIS_REF, `tc2_mc2::sm3_axis_type`): its
+    // members `fActPosition`, `fSetPosition`, `fActVelocity`, `fSetVelocity` (LREAL) and
+    // `nAxisState` (SMC_AXIS_STATE), read from the simulated axis as NcToPlc's are; another
+    // member stays unknown (sema's E1021 names it)
+    if let [Accessor::Field(f)] = rest.as_slice() {
+        let (name, out) = match f.key().as_str() {
+            "FACTPOSITION" | "FSETPOSITION" => (hidden_name(axis, "POS"), Some("Position")),
+            "FACTVELOCITY" | "FSETVELOCITY" => (hidden_name(axis, "VELO"), Some("Velocity")),
+            "NAXISSTATE" => {
+                if !used.computed.contains(&axis.key()) {
+                    used.computed.push(axis.key());
+                }
+                used.homed = true;
+                (hidden_name(axis, "NAXISSTATE"), None)
+            }
+            _ => return None,
+        };
+        used.note(axis);
+        let at = v.span;
+        let index = (!index.is_empty()).then_some(index);
+        *v = indexed(name, index, out, at);
+        return None;
+    }
     let [Accessor::Field(group), Accessor::Field(f), ..] = rest.as_slice() else {
         return None;
     };
@@ -885,6 +919,68 @@ fn computed(axis: &AxisPath, index: &[Operand]) -> Vec<IlStmt> {
         op(Op::Ld, false, status("Error")),
         bit(31),
     ]
+    .into_iter()
+    .chain(axis_state(axis, index))
+    .collect()
+}
+
+/// SoftMotion's `nAxisState` (SMC_AXIS_STATE, helpme-codesys.com SM3_Basic > SMC_AXIS_STATE:
+/// power_off 0, errorstop 1, stopping 2, standstill 3, discrete_motion 4, continuous_motion 5,
+/// synchronized_motion 6, homing 7) of one axis (of the element `index`), from the hidden
+/// MC_ReadStatus: the PLCopen states are exclusive, so the sum of each flag times its number.
+fn axis_state(axis: &AxisPath, index: &[Operand]) -> Vec<IlStmt> {
+    let at = axis.root.span;
+    let state = hidden(axis, "NAXISSTATE", index, None, at);
+    let mut code = vec![instr(
+        InstrKind::Simple {
+            op: Op::Ld,
+            negate: false,
+            operand: Some(Operand::literal(Literal {
+                kind: LiteralKind::Int(0),
+                type_prefix: None,
+                span: at,
+            })),
+        },
+        at,
+    )];
+    code.push(var_instr(Op::St, state.clone(), at));
+    for (flag, n) in [
+        ("ErrorStop", 1),
+        ("Stopping", 2),
+        ("Standstill", 3),
+        ("DiscreteMotion", 4),
+        ("ContinuousMotion", 5),
+        ("SynchronizedMotion", 6),
+        ("Homing", 7),
+    ] {
+        code.push(var_instr(
+            Op::Ld,
+            hidden(axis, "STATUS", index, Some(flag), at),
+            at,
+        ));
+        code.push(instr(
+            InstrKind::FunctionCall {
+                name: Ident::new("BOOL_TO_INT", at),
+                args: Box::new(CallArgs::None),
+            },
+            at,
+        ));
+        code.push(instr(
+            InstrKind::Simple {
+                op: Op::Mul,
+                negate: false,
+                operand: Some(Operand::literal(Literal {
+                    kind: LiteralKind::Int(n),
+                    type_prefix: None,
+                    span: at,
+                })),
+            },
+            at,
+        ));
+        code.push(var_instr(Op::Add, state.clone(), at));
+        code.push(var_instr(Op::St, state.clone(), at));
+    }
+    code
 }
 
 fn e1042(member: &str, span: Span) -> Diagnostic {

@@ -91,26 +91,7 @@ pub fn read_spellings(
     // the declared types: the structures that hold an AXIS_REF, Tc2_MC2's UDINT ErrorID
     // (`tc2_error_id`)
     let (structs, global_types) = declared_types(units);
-    let mut globals = crate::tc2_axis_ref::Axes {
-        paths: Vec::new(),
-        lists: Vec::new(),
-        homed_read: Default::default(),
-        torque_noted: Default::default(),
-    };
-    for item in units.iter().flat_map(|u| u.items.iter()) {
-        if let LibraryElement::GlobalVars(b) = item {
-            let paths = crate::tc2_axis_ref::axis_paths(b.vars.iter(), &structs);
-            if let Some(list) = &b.name {
-                for p in &paths {
-                    let pair = (list.key(), p.root.key());
-                    if !globals.lists.contains(&pair) {
-                        globals.lists.push(pair);
-                    }
-                }
-            }
-            globals.paths.extend(paths);
-        }
-    }
+    let globals = global_axes(units, &structs);
     for u in units.iter_mut() {
         for item in &mut u.items {
             // `eDir : MC_Direction := MC_Direction.MC_Shortest_Way;`
@@ -646,6 +627,49 @@ fn axis_defaults(block: &str, list: &mut Vec<FormalArg>, at: il_frontend::Span, 
 
 fn is_zero(o: &Operand) -> bool {
     matches!(o, Operand::Literal(l) if matches!(l.kind, LiteralKind::Int(0)) || matches!(l.kind, LiteralKind::Real(r) if r == 0.0))
+}
+
+/// The project's global `AXIS_REF`s (in global variable lists and unnamed `VAR_GLOBAL` blocks).
+fn global_axes(
+    units: &[CompilationUnit],
+    structs: &crate::tc2_axis_ref::Structs,
+) -> crate::tc2_axis_ref::Axes {
+    let mut globals = crate::tc2_axis_ref::Axes {
+        paths: Vec::new(),
+        lists: Vec::new(),
+        homed_read: Default::default(),
+        torque_noted: Default::default(),
+    };
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::GlobalVars(b) = item {
+            let paths = crate::tc2_axis_ref::axis_paths(b.vars.iter(), structs);
+            if let Some(list) = &b.name {
+                for p in &paths {
+                    let pair = (list.key(), p.root.key());
+                    if !globals.lists.contains(&pair) {
+                        globals.lists.push(pair);
+                    }
+                }
+            }
+            globals.paths.extend(paths);
+        }
+    }
+    globals
+}
+
+/// The Tc2_MC2 (and SoftMotion) `AXIS_REF` members read in the bodies of `units` that
+/// [`read_spellings`] has not read: those of the METHODs that `Session::check_uncalled` links
+/// into their POUs to check them on their own (the POUs' other bodies were read before; a hidden
+/// variable already declared is not declared again).
+pub fn read_axis_members(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
+    sm3_axis_type(units);
+    let (structs, _) = declared_types(units);
+    let globals = global_axes(units, &structs);
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        if let LibraryElement::Pou(p) = item {
+            crate::tc2_axis_ref::read_members(p, &globals, &structs, diags);
+        }
+    }
 }
 
 /// CODESYS SoftMotion's axis type, `AXIS_REF_SM3` (SM3_Basic), is ladderc's simulated `AXIS_REF`:

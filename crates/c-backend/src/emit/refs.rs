@@ -45,7 +45,7 @@ impl Gen<'_> {
                 }
                 Some(cfmt!("ladderc_ref((void *)&({lv}), sizeof({lv}))"))
             }
-            Place::Loc { .. } | Place::Part { .. } => {
+            Place::Loc { .. } | Place::Part { .. } | Place::StrByte { .. } => {
                 // sema refuses it (E0305); no address of the process image is handed out
                 self.unsupported(r.span, "a reference to a located variable or a bit");
                 None
@@ -190,7 +190,7 @@ impl Gen<'_> {
         }
         match self.place_or_located_array(scope, &s.of)? {
             Place::Mem { lv, .. } => Some(cfmt!("sizeof({lv})")),
-            Place::Loc { ty, .. } | Place::Part { ty, .. } => {
+            Place::Loc { ty, .. } | Place::Part { ty, .. } | Place::StrByte { ty, .. } => {
                 // a located array: the C type's size (`IEC_INT[5]`), as a named array's
                 let base = ctypes::base(self.model, &ty)?;
                 let dims = ctypes::dims(&ty);

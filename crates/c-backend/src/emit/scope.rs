@@ -43,12 +43,25 @@ pub enum Place {
         width: u32,
         ty: Type,
     },
+    /// CODESYS/TwinCAT `s[i]` of a STRING (a BYTE) or a WSTRING (a WORD): the code at offset
+    /// `index` (a C expression) of the string `lv`, whose declared length is `cap`; read and
+    /// written through `ladderc_str_byte_get/_set` (`ladderc_wstr_word_...`), which keep LEN(s).
+    StrByte {
+        lv: String,
+        index: String,
+        cap: u32,
+        site: String,
+        ty: Type,
+    },
 }
 
 impl Place {
     pub fn ty(&self) -> &Type {
         match self {
-            Place::Mem { ty, .. } | Place::Loc { ty, .. } | Place::Part { ty, .. } => ty,
+            Place::Mem { ty, .. }
+            | Place::Loc { ty, .. }
+            | Place::Part { ty, .. }
+            | Place::StrByte { ty, .. } => ty,
         }
     }
 }
@@ -462,6 +475,10 @@ impl Gen<'_> {
                     place = self.located_index(scope, loc, &ty, idx, r.span, &site)?;
                     continue;
                 }
+                Place::StrByte { .. } => {
+                    self.unsupported(r.span, "fields or indexes of a string's byte");
+                    return None;
+                }
                 Place::Loc { .. } | Place::Part { .. } => {
                     self.unsupported(r.span, "fields or indexes of a located variable");
                     return None;
@@ -475,6 +492,23 @@ impl Gen<'_> {
                 }
                 // edition 3: `s[i]`, the i-th character (1-based) of a STRING or a WSTRING; out
                 // of 1..LEN(s) a NUL read and a write dropped (`ladderc_char_at`)
+                // CODESYS, TwinCAT: the BYTE (WORD) at offset i, 0 the first (sema: `byte_indexes`)
+                Accessor::Index(idx)
+                    if matches!(ty, Type::String { .. })
+                        && idx.len() == 1
+                        && self.model.byte_indexes.contains(&idx[0].span()) =>
+                {
+                    let wide = matches!(ty, Type::String { wide: true, .. });
+                    let site = self.index_site(scope, r, at);
+                    let index = self.value(scope, &idx[0], &Type::Elementary(E::Lint))?;
+                    Place::StrByte {
+                        cap: ctypes::string_cap(&ty),
+                        lv,
+                        index,
+                        site,
+                        ty: Type::Elementary(if wide { E::Word } else { E::Byte }),
+                    }
+                }
                 Accessor::Index(idx) if matches!(ty, Type::String { .. }) && idx.len() == 1 => {
                     let wide = matches!(ty, Type::String { wide: true, .. });
                     let site = self.index_site(scope, r, at);
@@ -803,6 +837,16 @@ impl Gen<'_> {
     /// Reads a place as a value of type `want` (the place's lvalue text is reused).
     pub fn read_owned(&self, place: Place, want: &Type) -> String {
         match place {
+            Place::StrByte {
+                lv,
+                index,
+                cap,
+                site,
+                ty,
+            } => {
+                let f = str_byte_fn(&ty);
+                convert_owned(cfmt!("{f}_get(&({lv}), {index}, {cap}, {site})"), &ty, want)
+            }
             Place::Mem { lv, ty } => convert_owned(lv, &ty, want),
             Place::Loc { loc, ty, at } => {
                 convert_owned(load_expr(&loc, at.as_deref(), &ty), &ty, want)
@@ -869,6 +913,16 @@ impl Gen<'_> {
                 }
             },
             Place::Loc { loc, ty, at } => out.push_str(&store_expr(loc, at.as_deref(), ty, value)),
+            Place::StrByte {
+                lv,
+                index,
+                cap,
+                site,
+                ty,
+            } => {
+                let f = str_byte_fn(ty);
+                let _ = write!(out, "{f}_set(&({lv}), {index}, {cap}, {value}, {site});");
+            }
             Place::Part {
                 whole,
                 shift,
@@ -1032,6 +1086,16 @@ fn clamp64(v: i128) -> String {
         cfmt!("-INT64_C({})", -v)
     } else {
         cfmt!("INT64_C({v})")
+    }
+}
+
+/// The runtime's functions of a [`Place::StrByte`] of type `ty` (BYTE: a STRING's, WORD: a
+/// WSTRING's).
+fn str_byte_fn(ty: &Type) -> &'static str {
+    if matches!(ty, Type::Elementary(E::Word)) {
+        "ladderc_wstr_word"
+    } else {
+        "ladderc_str_byte"
     }
 }
 

@@ -784,6 +784,9 @@ impl Analyzer<'_> {
                 UserTypeDef::Alias { target, .. } => target.clone(),
             };
         }
+        if let Some(e) = pointer_sized(&n.name) {
+            return Type::Elementary(e);
+        }
         if let Some(&id) = self.pou_names.get(&n.key()) {
             let kind = self.model.pous[id.0 as usize].kind;
             if kind == ast::PouKind::FunctionBlock {
@@ -2157,6 +2160,20 @@ fn struct_declaration_order(units: &[CompilationUnit]) -> Vec<&ast::TypeDecl> {
         }
     }
     order
+}
+
+/// CODESYS's pseudo types `__XINT`, `__UXINT`, `__XWORD` (and TwinCAT's `XINT`, `UXINT`, `XWORD`),
+/// a user type of that name aside: pointer-sized integers, LINT, ULINT and LWORD on a 64-bit target
+/// (CODESYS help "Data Type: __UXINT, __XINT, __XWORD"; Infosys "Special data types XINT, UXINT,
+/// XWORD and PVOID"). ladderc's programs run on 64-bit hosts, so the 64-bit widths.
+fn pointer_sized(name: &str) -> Option<Elementary> {
+    let upper = name.to_ascii_uppercase();
+    match upper.strip_prefix("__").unwrap_or(&upper) {
+        "XINT" => Some(Elementary::Lint),
+        "UXINT" => Some(Elementary::Ulint),
+        "XWORD" => Some(Elementary::Lword),
+        _ => None,
+    }
 }
 
 #[cfg(test)]

@@ -37,6 +37,42 @@ thread_local! {
         Default::default();
 }
 
+thread_local! {
+    /// The files written for CODESYS or TwinCAT: see [`CodesysFiles`].
+    static CODESYS_FILES: std::cell::RefCell<std::collections::HashSet<diagnostics::FileId>> =
+        Default::default();
+}
+
+/// The files written for CODESYS or TwinCAT (TwinCAT 3 objects, CODESYS V2.3 exports and objects,
+/// CODESYS's PLCopen XML), known to the analyses run while the guard lives: the vendor's meaning
+/// applies there where it differs from IEC 61131-3 edition 3's (`s[i]` of a STRING is a BYTE at
+/// offset `i`, 0 the first, not the i-th CHAR).
+pub struct CodesysFiles {
+    before: std::collections::HashSet<diagnostics::FileId>,
+}
+
+impl CodesysFiles {
+    /// Makes `files` known until the guard is dropped (then the ones known before are again).
+    pub fn set(files: impl IntoIterator<Item = diagnostics::FileId>) -> CodesysFiles {
+        let files = files.into_iter().collect();
+        CodesysFiles {
+            before: CODESYS_FILES.with(|t| t.replace(files)),
+        }
+    }
+}
+
+impl Drop for CodesysFiles {
+    fn drop(&mut self) {
+        let before = std::mem::take(&mut self.before);
+        CODESYS_FILES.with(|t| t.replace(before));
+    }
+}
+
+/// Whether `file` was written for CODESYS or TwinCAT ([`CodesysFiles`]).
+pub(crate) fn is_codesys_file(file: diagnostics::FileId) -> bool {
+    CODESYS_FILES.with(|t| t.borrow().contains(&file))
+}
+
 /// The files read from TwinCAT 3 objects, known to the analyses run while the guard lives
 /// (`TwinCatFiles::set(files)`): what TwinCAT accepts and IEC 61131-3 reserves is accepted there
 /// (`Configuration`, `Resource` naming a variable: W1418).

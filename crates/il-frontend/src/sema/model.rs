@@ -9,7 +9,7 @@
 
 use crate::ast::{AddressSize, Area, DirectAddress, PouKind, VarKind};
 use crate::Span;
-use rustc_hash::FxHashMap;
+use rustc_hash::{FxHashMap, FxHashSet};
 use serde::Serialize;
 
 /// Index of a POU in [`Model::pous`].
@@ -1331,6 +1331,10 @@ pub struct Model {
     /// sets; otherwise only standard FB calls with EN store it).
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub fb_eno_read: bool,
+    /// The `s[i]` on a STRING or WSTRING read as CODESYS and TwinCAT do (a BYTE or WORD at offset
+    /// `i`, 0 the first; [`crate::sema::CodesysFiles`]): the spans of their index operands.
+    #[serde(skip)]
+    pub byte_indexes: FxHashSet<Span>,
     /// The programs whose variables other POUs use by name (`MAIN.x`, W1413; each has one instance):
     /// the C declares their instance in the header.
     #[serde(skip_serializing_if = "Vec::is_empty")]

@@ -482,6 +482,26 @@ impl Body<'_, '_> {
                         return Place::error();
                     }
                     self.index_operand(&ixs[0]);
+                    // CODESYS, TwinCAT: the BYTE (WSTRING: WORD) at offset i, 0 the first, of
+                    // the declared length and its terminator (CODESYS help "Data type: POINTER
+                    // TO", "Index access to STRING"); checked against 0..length at run time
+                    if super::is_codesys_file(ixs[0].span().file) {
+                        let d = Dim {
+                            lower: 0,
+                            upper: i128::from(len.max(1)),
+                        };
+                        self.constant_byte_index_in_bounds(&ixs[0], &d, v, at);
+                        self.a.model.byte_indexes.insert(ixs[0].span());
+                        place = Place {
+                            ty: Type::Elementary(if wide {
+                                Elementary::Word
+                            } else {
+                                Elementary::Byte
+                            }),
+                            read_only: place.read_only,
+                        };
+                        continue;
+                    }
                     let d = Dim {
                         lower: 1,
                         upper: i128::from(len.max(1)),
@@ -594,6 +614,32 @@ impl Body<'_, '_> {
             .error(code::E1050, l.span, message)
             .label(label)
             .hint(hint);
+    }
+
+    /// E1050 when the offset of a CODESYS/TwinCAT `s[i]` is an integer literal outside 0..the
+    /// declared length (the place of the terminator the last).
+    fn constant_byte_index_in_bounds(&mut self, ix: &Operand, d: &Dim, v: &VarRef, at: usize) {
+        let Operand::Literal(l) = ix else { return };
+        let ast::LiteralKind::Int(k) = l.kind else {
+            return;
+        };
+        if (d.lower..=d.upper).contains(&k) {
+            return;
+        }
+        let path = path_text(v, at);
+        self.a
+            .error(
+                code::E1050,
+                l.span,
+                format!(
+                    "offset {k} is outside the declared length 0..{} of `{path}`",
+                    d.upper
+                ),
+            )
+            .label("outside the string")
+            .hint(format!(
+                "in CODESYS and TwinCAT s[i] is the byte at offset i, 0 the first; declare `{path}` longer to hold offset {k}"
+            ));
     }
 
     /// Checks one index of an array (or pointer) access: an integer.

@@ -102,6 +102,7 @@ pub fn analyze(path: &Path, text: &str, root: Option<&Path>) -> Analysis {
         .map(|(id, _)| id);
     let model = {
         let _twincat = il_frontend::sema::TwinCatFiles::set(s.twincat_files.iter().copied());
+        let _codesys = il_frontend::sema::CodesysFiles::set(s.codesys_files.iter().copied());
         il_frontend::sema::analyze(&units, &mut quiet)
     };
     Analysis {
