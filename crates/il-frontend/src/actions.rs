@@ -990,11 +990,20 @@ pub const METHOD_CALL_PREFIX: &str = "__MC";
 pub const METHOD_PREFIX: &str = "__M_";
 
 thread_local! {
-    /// The hidden names of the methods' variables declared so far on this thread
-    /// (`__M_TAKE_O`, `__MD_TAKE_O`, `__M_TAKE`, `__MZ_TAKE`) with the user's spelling
-    /// (`Take.o`, `Take`): see [`remember_spellings`].
+    /// The hidden names of the methods' variables declared by the compilation under way on this
+    /// thread (`__M_TAKE_O`, `__MD_TAKE_O`, `__M_TAKE`, `__MZ_TAKE`) with the user's spelling
+    /// (`Take.o`, `Take`): see [`remember_spellings`]; emptied as each compilation starts
+    /// ([`forget_spellings`]).
     static SPELLINGS: std::cell::RefCell<std::collections::HashMap<String, String>> =
         std::cell::RefCell::new(std::collections::HashMap::new());
+}
+
+/// Forgets every spelling [`remember_spellings`] recorded on this thread: called as a compilation
+/// starts reading its inputs, so that its messages show only its own methods' names (before round
+/// 28 the table only grew: a language server's later compiles showed the names of methods no
+/// longer declared, `Take.oVal` for a `__M_TAKE_OVAL` of another text).
+pub fn forget_spellings() {
+    SPELLINGS.with(|s| s.borrow_mut().clear());
 }
 
 /// Records how the user wrote method `method` and its variables `vars`, for [`shown_names`].

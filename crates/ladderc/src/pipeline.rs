@@ -270,6 +270,9 @@ impl Session {
 
     /// [`Session::load`] with every input read in `lang` when it is given.
     pub fn load_as(&mut self, paths: &[PathBuf], lang: Option<Lang>) -> Vec<CompilationUnit> {
+        // the spellings of methods' variables in messages: this compilation's only (a language
+        // server compiles again and again on one thread)
+        il_frontend::actions::forget_spellings();
         let mut units = Vec::new();
         let mut pending = Vec::new();
         let mut var_config = Vec::new();
@@ -328,6 +331,8 @@ impl Session {
         // the programs of every file, known before any is parsed: `PRG.M(x)` in one file calls a
         // method of a program of another (TwinCAT: one POU per file), no library's function
         let mut programs = std::collections::HashSet::new();
+        // and the bases their blocks extend: `_abs.M()` names a variable of a base of a base
+        let mut bases = std::collections::HashMap::new();
         // and their global variables: a POU's initial value reading one is computed at run time
         let mut globals = std::collections::HashSet::new();
         // and their namespaces: `Plant.Util.Twice(21)` names another file's `NAMESPACE Plant.Util`
@@ -342,12 +347,14 @@ impl Session {
             };
             if let Some(t) = text {
                 programs.extend(il_frontend::st::qualifiers::program_names(&t));
+                bases.extend(il_frontend::st::qualifiers::extends_pairs(&t));
                 globals.extend(il_frontend::st::global_variable_names(&t));
                 namespaces.extend(il_frontend::st::qualifiers::namespace_names(&t));
             }
         }
         let namespaces_before = il_frontend::st::qualifiers::set_project_namespaces(namespaces);
         let programs_before = il_frontend::st::qualifiers::set_project_programs(programs);
+        let bases_before = il_frontend::st::qualifiers::set_project_bases(bases);
         let globals_before = il_frontend::st::set_project_globals(globals);
         // several PLCopen XML files (CODESYS exports one object per file), or XML beside text
         // inputs (a TwinCAT project's `.TcDUT` types of an imported PLCopen POU): compiled once
@@ -861,6 +868,7 @@ impl Session {
         // B&R: a program folder's _INIT, _CYCLIC, _EXIT and .var files are one program
         crate::br_programs::join(&mut units, &self.map, &mut self.diags);
         il_frontend::st::qualifiers::set_project_programs(programs_before);
+        il_frontend::st::qualifiers::set_project_bases(bases_before);
         il_frontend::st::qualifiers::set_project_namespaces(namespaces_before);
         il_frontend::st::set_project_globals(globals_before);
         units

@@ -174,6 +174,10 @@ pub(super) struct Body<'a, 'd> {
     /// `ADR(v)` of a FUNCTION's own variable in the operand the last `LD` read (`sema::refs`):
     /// its `ST` into anything but a variable of the function is W1444.
     pub(super) call_address: Option<crate::Span>,
+    /// Whether the last `LD` loaded the never-written initial value of a method's variable
+    /// (`__MD_<M>_<X>`): the `ST` after it restarts the variable at the method's start, no copy
+    /// the user wrote (no W1437 for an instance restarted so).
+    pub(super) loaded_method_default: bool,
 }
 
 impl Analyzer<'_> {
@@ -198,6 +202,7 @@ impl Analyzer<'_> {
             typed_generic: None,
             scoped_refs: Default::default(),
             call_address: None,
+            loaded_method_default: false,
         };
         b.scope_reference_inputs(&pou.body);
         // Pass 1, silent: what the backward jumps bring. Without backward jumps it would find nothing
@@ -804,6 +809,8 @@ impl Body<'_, '_> {
                     return;
                 };
                 self.call_address = None;
+                self.loaded_method_default = matches!(o, crate::ast::Operand::Var(v)
+                    if v.accessors.is_empty() && v.base.name.starts_with("__MD_"));
                 let t = self.read_operand(o);
                 if negate {
                     self.check_class_bit(&t, o.span(), "LDN");
@@ -836,7 +843,9 @@ impl Body<'_, '_> {
                 }
                 if place.is_fb() {
                     if matches!(&cr, Ty::Known(c) if *c == place) {
-                        self.instance_copied(o.span());
+                        if !self.loaded_method_default {
+                            self.instance_copied(o.span());
+                        }
                     } else {
                         self.not_a_value(o);
                         place = Type::Error;

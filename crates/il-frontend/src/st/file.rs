@@ -2910,6 +2910,7 @@ pub fn add_method_vars(
     let mut temps = Vec::new();
     let mut in_outs = Vec::new();
     let mut defaults = Vec::new();
+    let mut own_defaults = Vec::new();
     let mut kept = Vec::new();
     let mut stat = Vec::new();
     let mut externals: Vec<VarBlock> = Vec::new();
@@ -3004,16 +3005,19 @@ pub fn add_method_vars(
                     _ => false,
                 };
                 // a local of the block's own type (an instance of its own class, IEC 61131-3
-                // ed. 3 6.6.5) is no variable of the instance (a C local of the call), and a
-                // block instance does not restart per call (`Declarations::resets_per_call`):
-                // no copy of its initial value, which the instance would hold inside itself
+                // ed. 3 6.6.5) is no variable of the instance (a C local of the call): its copy
+                // of the initial value is one too (the instance cannot hold one inside itself)
                 let own = !matches!(b.kind, VarKind::Input) && holds_pou(&v.ty, &p.name);
-                if per_call && !own && !matches!(v.ty, crate::ast::TypeRef::Ref { .. }) {
+                if per_call && !matches!(v.ty, crate::ast::TypeRef::Ref { .. }) {
                     // never written: the value a call that leaves the input out passes, and the
-                    // value a local starts each call with
+                    // value a local starts each call with (`Declarations::local_resets_per_call`)
                     let mut d = v.clone();
                     d.name.name = crate::actions::method_input_default(&m.name.name, &v.name.name);
-                    defaults.push(d);
+                    if own {
+                        own_defaults.push(d);
+                    } else {
+                        defaults.push(d);
+                    }
                 }
                 v.name.name = method_var(&m.name.name, &v.name.name);
                 if is_stat {
@@ -3035,6 +3039,7 @@ pub fn add_method_vars(
         (VarKind::Output, outputs, None),
         (VarKind::InOut, in_outs, None),
         (VarKind::Temp, temps, None),
+        (VarKind::Temp, own_defaults, None),
         (VarKind::Local, defaults, None),
         (VarKind::Local, kept, None),
         (
@@ -3569,7 +3574,7 @@ fn lower_method_as(
                     .is_none_or(|n| n.name != super::var_stat::MARK)
             })
             .flat_map(|b| b.vars.iter())
-            .filter(|v| !m.inst.contains(&v.name.key()) && decls.resets_per_call(&v.ty))
+            .filter(|v| !m.inst.contains(&v.name.key()) && decls.local_resets_per_call(&v.ty))
             .flat_map(|v| {
                 copy(
                     crate::actions::method_input_default(&m.name.name, &v.name.name),

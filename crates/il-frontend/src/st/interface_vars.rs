@@ -501,8 +501,40 @@ impl Rewriter<'_, '_> {
         }
     }
 
+    /// `THIS^` when `e` is `THIS` itself (read by the parser as `ADR(THIS^)`; `REF(THIS^)` too)
+    /// in a function block or class that declares no variable `THIS`: the reference to the
+    /// instance (edition 3 and SIMATIC AX: `REF_TO` the class; CODESYS: `POINTER TO` the block)
+    /// stands for the instance where an interface is expected (`Item := THIS;` in a method
+    /// returning an interface the class implements, `handler.Action(te := THIS)`: before round
+    /// 28, E1006 and E1012).
+    fn this_instance(&self, e: &Expr) -> Option<Expr> {
+        let ExprKind::Call { name, args } = &e.kind else {
+            return None;
+        };
+        let [arg] = args.as_slice() else {
+            return None;
+        };
+        if !(name.is("ADR") || name.is("REF")) || arg.name.is_some() {
+            return None;
+        }
+        let ExprKind::Place(p) = &arg.value.kind else {
+            return None;
+        };
+        let PlaceBase::Name(n) = &p.base else {
+            return None;
+        };
+        let this = n.is("THIS")
+            && matches!(p.accessors.as_slice(), [Accessor::Deref(_)])
+            && self.env.pou_kind == PouKind::FunctionBlock
+            && self.env.var_type(n).is_none();
+        this.then(|| arg.value.clone())
+    }
+
     /// The function block type of an instance `e` (a place whose type is a user block).
     fn block_of(&self, e: &Expr) -> Option<Ident> {
+        if let Some(inst) = self.this_instance(e) {
+            return self.block_of(&inst);
+        }
         let ExprKind::Place(p) = &e.kind else {
             return None;
         };
@@ -763,6 +795,8 @@ impl Rewriter<'_, '_> {
         if is_zero(self.env, value) {
             return Some(set(int(0, span), &|_| null(span)));
         }
+        let this = self.this_instance(value);
+        let value = this.as_ref().unwrap_or(value);
         if let Some(j) = self.expr_interface(value).cloned() {
             if j.name.key() == i.name.key() {
                 return None;

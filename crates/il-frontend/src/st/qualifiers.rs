@@ -50,6 +50,13 @@ thread_local! {
     static OTHER_FILES_NAMES: std::cell::RefCell<std::collections::HashSet<String>> =
         Default::default();
 
+    /// The base each function block or class of the project's files EXTENDS (upper case, derived
+    /// to base), set by [`set_project_bases`]: `_abs.M()` in a block names a variable of any of
+    /// its bases, which other files may declare (a chain `C EXTENDS B`, `B EXTENDS A` over three
+    /// files: before round 28 only the direct base was looked up, E1032 for `A`'s variables).
+    static PROJECT_BASES: std::cell::RefCell<std::collections::HashMap<String, String>> =
+        Default::default();
+
     /// The `NAMESPACE Name ... END_NAMESPACE` names of every file of the project (upper case,
     /// dotted parts joined by `.`), set by [`set_project_namespaces`]: files given together are
     /// one project, and a namespace is not tied to a file (IEC 61131-3 ed. 3, 6.9), so
@@ -116,6 +123,60 @@ pub fn set_project_programs(
     names: std::collections::HashSet<String>,
 ) -> std::collections::HashSet<String> {
     PROJECT_PROGRAMS.with(|p| p.replace(names))
+}
+
+/// Sets the bases (derived to base, upper case, [`extends_pairs`] of every file of the project)
+/// that `library_qualifiers` follows; returns those set before, to put back when the project is
+/// read.
+pub fn set_project_bases(
+    bases: std::collections::HashMap<String, String>,
+) -> std::collections::HashMap<String, String> {
+    PROJECT_BASES.with(|p| p.replace(bases))
+}
+
+/// Each `FUNCTION_BLOCK Name EXTENDS Base` and `CLASS Name EXTENDS Base` of `text` (an `.st` file or
+/// a TwinCAT object's XML; `FINAL`, `ABSTRACT` and an access word may stand before the name, a
+/// qualified base counts by its last part), upper case: a scan of the raw text, before any file
+/// is parsed.
+pub fn extends_pairs(text: &str) -> Vec<(String, String)> {
+    let b = text.as_bytes();
+    let is_word = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
+    // the words of the text (a dotted name as one: `Lib.Base`)
+    let mut words: Vec<&str> = Vec::new();
+    let mut i = 0;
+    while i < b.len() {
+        if !is_word(b[i]) {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < b.len()
+            && (is_word(b[i]) || (b[i] == b'.' && b.get(i + 1).is_some_and(|&c| is_word(c))))
+        {
+            i += 1;
+        }
+        words.push(&text[start..i]);
+    }
+    let mut out = Vec::new();
+    for k in 1..words.len().saturating_sub(1) {
+        if !words[k].eq_ignore_ascii_case("EXTENDS") {
+            continue;
+        }
+        let opens = words[..k - 1].iter().rev().take(4).find(|w| {
+            !["FINAL", "ABSTRACT", "PUBLIC", "INTERNAL"]
+                .iter()
+                .any(|m| w.eq_ignore_ascii_case(m))
+        });
+        if !opens.is_some_and(|w| {
+            w.eq_ignore_ascii_case("FUNCTION_BLOCK") || w.eq_ignore_ascii_case("CLASS")
+        }) {
+            continue;
+        }
+        let base = words[k + 1].rsplit('.').next().unwrap_or(words[k + 1]);
+        let name = words[k - 1].rsplit('.').next().unwrap_or(words[k - 1]);
+        out.push((name.to_ascii_uppercase(), base.to_ascii_uppercase()));
+    }
+    out
 }
 
 /// The names after the word `PROGRAM` in `text` (an `.st` file or a TwinCAT object's XML), upper
@@ -250,6 +311,30 @@ fn namespace_blocks(src: &str, toks: &[Token], text: &mut Option<String>) -> Vec
     names
 }
 
+/// Whether `base` (upper case; empty: none) or one of the bases it extends in turn
+/// ([`PROJECT_BASES`]) declares variable `var` in one of the project's files (`BASE.VAR` among
+/// `names`).
+fn in_bases(base: &str, var: &str, names: &std::collections::HashSet<String>) -> bool {
+    PROJECT_BASES.with(|p| {
+        let p = p.borrow();
+        let mut b = base.to_string();
+        // (a chain is finite: a cycle, E0331, is cut after as many steps as there are blocks)
+        for _ in 0..=p.len() {
+            if b.is_empty() {
+                return false;
+            }
+            if names.contains(&format!("{b}.{var}")) {
+                return true;
+            }
+            match p.get(&b) {
+                Some(next) => b = next.clone(),
+                None => return false,
+            }
+        }
+        false
+    })
+}
+
 /// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
 /// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
 /// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
@@ -379,7 +464,7 @@ pub(super) fn library_qualifiers(
                 let o = o.borrow();
                 o.contains(&w)
                     || (!pou.is_empty() && o.contains(&format!("{pou}.{w}")))
-                    || (!base.is_empty() && o.contains(&format!("{base}.{w}")))
+                    || in_bases(&base, &w, &o)
             })
         {
             continue;
@@ -487,4 +572,27 @@ pub(super) fn library_qualifiers(
         *text = String::from_utf8(bytes).unwrap_or_default();
     }
     text
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The bases of a project's blocks and classes, read from raw text (ST, a `.TcPOU`'s XML):
+    /// modifiers before the name and a qualified base are read; an INTERFACE's and a STRUCT's
+    /// EXTENDS are not a block's.
+    #[test]
+    fn extends_pairs_are_read_from_raw_text() {
+        let text = "CLASS FINAL Enc EXTENDS Lib.BaseEnc\nEND_CLASS\n\
+                    <Declaration><![CDATA[FUNCTION_BLOCK FB_C EXTENDS FB_B IMPLEMENTS I_X\n]]>\n\
+                    INTERFACE I_B EXTENDS I_A END_INTERFACE\n\
+                    TYPE ST_B EXTENDS ST_A : STRUCT x : INT; END_STRUCT END_TYPE\n";
+        assert_eq!(
+            extends_pairs(text),
+            [
+                ("ENC".to_string(), "BASEENC".to_string()),
+                ("FB_C".to_string(), "FB_B".to_string()),
+            ]
+        );
+    }
 }

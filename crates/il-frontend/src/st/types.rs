@@ -166,6 +166,25 @@ impl Declarations {
             TypeRef::Array { .. } | TypeRef::Ref { .. } => false,
         }
     }
+    /// Whether a method's own VAR or VAR_TEMP of type `ty` starts again at its initial value at
+    /// each call, also the second of two calls in one scan (IEC 61131-3 ed. 3, 6.6.1.2: a
+    /// method's variables are temporary; CODESYS creates a method's instances again at each call):
+    /// what [`Self::resets_per_call`] resets, and arrays of it, and function block instances
+    /// (before round 28 these kept the previous call's values when the block called its method
+    /// twice in one scan). Not a reference or an interface (set by the method's statements).
+    pub fn local_resets_per_call(&self, ty: &TypeRef) -> bool {
+        match ty {
+            TypeRef::Array { element, .. } => self.local_resets_per_call(element),
+            TypeRef::Named(n) => {
+                let key = n.key();
+                self.pous.contains_key(&key)
+                    || crate::sema::StdFb::from_name(&n.name).is_some()
+                    || self.resets_per_call(ty)
+            }
+            _ => self.resets_per_call(ty),
+        }
+    }
+
     /// Whether a data type, POU interface or global holds a `REFERENCE TO` (then the ST lowering
     /// looks for the `^` each access leaves out: see `Env::implicit_derefs`). Read once the
     /// declarations are complete: the answer is kept.
