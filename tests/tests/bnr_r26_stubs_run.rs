@@ -12,9 +12,10 @@
 //!   writes it): the argument binds the output (IEC 61131-3 ed. 3, 6.6.1.4.2: a non-formal call
 //!   gives the parameters in the order of the definition) (before: E1011 "C has no input or
 //!   output `Get`");
-//! - a function block called positionally with an argument for its output: the E1020 says an
-//!   output is not passed positionally and how to connect it (before: "C has 0 inputs, 1 given"
-//!   alone).
+//! - a function block called positionally with one argument too many past its outputs: the
+//!   E1020 says an output is given by position only with all the parameters and how to connect it
+//!   (before: "C has 0 inputs, 1 given" alone). (Since round 28 a positional call that lists
+//!   all of a block's parameters, outputs included, binds the outputs: `functions_r28_run.rs`.)
 
 mod common;
 
@@ -83,15 +84,16 @@ fn method_output_passed_positionally() {
     assert_eq!(column(&trace, "main.x"), vec![7.0, 8.0], "{trace}");
 }
 
-/// A function block's output given positionally: one E1020 that says so.
+/// A function block given more positional arguments than its inputs and not all its parameters
+/// (outputs included): one E1020 that says an output is not passed so.
 #[test]
 fn fb_output_positional_is_explained() {
-    let src = "FUNCTION_BLOCK Five\nVAR_OUTPUT\n\to : INT;\nEND_VAR\no := 5;\nEND_FUNCTION_BLOCK\n\nPROGRAM main\nVAR\n\tf : Five;\n\tx : INT;\nEND_VAR\nf(x);\nEND_PROGRAM\n";
+    let src = "FUNCTION_BLOCK Five\nVAR_OUTPUT\n\to : INT;\nEND_VAR\no := 5;\nEND_FUNCTION_BLOCK\n\nPROGRAM main\nVAR\n\tf : Five;\n\tx : INT;\nEND_VAR\nf(x, x);\nEND_PROGRAM\n";
     let (code, lines) = check_text("five.st", src);
     assert_eq!(code, Some(1));
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
-        lines[0].contains("error[E1020]: Five has 0 inputs, 1 given: an output of a block is not passed positionally")
+        lines[0].contains("error[E1020]: Five has 0 inputs, 2 given: an output of a block is given by position only in a call that lists all its parameters in order")
             && lines[0].contains("`o => x`"),
         "{lines:?}"
     );

@@ -1095,6 +1095,16 @@ impl Body<'_, '_> {
             .collect();
         rec.callee = Some(Callee::UserFunction(id));
         let result = Ty::Known(pou.return_type.clone().unwrap_or(Type::Error));
+        if self
+            .a
+            .declared_twice
+            .contains(&pou.name.to_ascii_uppercase())
+        {
+            // an overloaded function (SIMATIC AX): its E1002 is the one cause, the arguments are
+            // not checked against the declaration kept
+            self.args_unchecked(args);
+            return result;
+        }
         match args {
             CallArgs::Formal(fargs) => {
                 for (k, fa) in fargs.iter().enumerate() {
@@ -1318,7 +1328,7 @@ impl Body<'_, '_> {
                             code::E1020,
                             ops[inputs.len()].span(),
                             format!(
-                                "{tname} has {} inputs, {} given: an output of a block is not passed positionally",
+                                "{tname} has {} inputs, {} given: an output of a block is given by position only in a call that lists all its parameters in order",
                                 inputs.len(),
                                 ops.len()
                             ),

@@ -469,6 +469,7 @@ impl Analyzer<'_> {
     /// Registers a POU or type name; reports a duplicate (returns false).
     fn unique_global_name(&mut self, name: &ast::Ident, first: &mut HashMap<String, Span>) -> bool {
         if let Some(&prev) = first.get(&name.key()) {
+            self.declared_twice.insert(name.key());
             self.error(
                 code::E1002,
                 name.span,

@@ -148,6 +148,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         unknown_enums: Vec::new(),
         unknown_enum_uses: std::collections::HashSet::new(),
         unknown_types: Vec::new(),
+        declared_twice: std::collections::HashSet::new(),
     };
     let pous = a.declare(units);
     // a block holding an instance of itself by value has no size: E1080, the variable cut
@@ -239,6 +240,10 @@ pub(crate) struct Analyzer<'d> {
     /// E1003 per name at its first use, its message counting the uses as the PLCopen XML reader's
     /// E3009 does ([`Analyzer::count_unknown_types`]).
     pub(crate) unknown_types: Vec<(String, crate::Span, Vec<crate::Span>)>,
+    /// The POU and type names declared more than once (upper case), each an E1002: a call of
+    /// such a function (SIMATIC AX overloads `CountDigits(LINT)` and `CountDigits(ULINT)`) is not
+    /// checked against the one declaration kept, the E1002 is its cause.
+    pub(crate) declared_twice: std::collections::HashSet<String>,
 }
 
 impl Analyzer<'_> {

@@ -216,11 +216,12 @@ impl Env<'_> {
             .map(|p| elem_ref(p.ty, field.span))
     }
 
-    /// Whether `p`'s type is unknown because a part of it is of a library-qualified type that
-    /// nothing declares (`pos.v` with `pos : Lib.POS_REF`: the qualifier of a library ladderc
-    /// provides is gone by now, `st::qualifiers`, so any other got its E1032): that error is the
-    /// cause, not `p`'s use. (An unqualified name may still be a type that ladderc adds later,
-    /// `AXIS_REF`: not judged here.)
+    /// Whether `p`'s type is unknown because a part of it is of a type that nothing declares
+    /// (`pos.v` with `pos : Lib.POS_REF`: the qualifier of a library ladderc provides is gone by
+    /// now, `st::qualifiers`, so any other got its E1032; `x.a` with `x : Missing`: sema's E1003
+    /// at the declaration): that error is the cause, not `p`'s use. An unqualified name that is
+    /// a type ladderc adds later (`AXIS_REF`, `AXES_GROUP_REF`, the PLCopen motion blocks
+    /// `MC_...` of its block library) is not judged here.
     pub fn of_unknown_type(&self, p: &Place) -> bool {
         let PlaceBase::Name(n) = &p.base else {
             return false;
@@ -230,12 +231,18 @@ impl Env<'_> {
         };
         let unknown = |t: &TypeRef| match self.resolve(t) {
             TypeRef::Named(n) => {
-                (n.name.contains('.') || n.name.starts_with("__"))
+                let added_later = n.is("AXIS_REF")
+                    || n.is("AXES_GROUP_REF")
+                    || n.name
+                        .get(..3)
+                        .is_some_and(|p| p.eq_ignore_ascii_case("MC_"));
+                (n.name.contains('.') || n.name.starts_with("__") || !added_later)
                     && Elementary::from_name(&n.name).is_none()
                     && !n.is("STRING")
                     && !n.is("WSTRING")
                     && self.decls.type_decl(&n.name).is_none()
                     && self.decls.pou(&n.name).is_none()
+                    && !self.decls.interfaces.contains_key(&n.key())
                     && StdFb::from_name(&n.name).is_none()
             }
             _ => false,

@@ -1817,11 +1817,9 @@ impl<'d> PouLowering<'d> {
                     if !matches!(a.value.kind, ExprKind::Place(_))
                         && plain_in_outs.contains(&name.key()) =>
                 {
-                    // (a property given there already has its E0338: one cause, one error)
-                    let property = diags
-                        .iter()
-                        .any(|d| d.code == code::E0338 && d.span == Some(a.value.span));
-                    if property {
+                    // an argument already reported (a property given there: the property
+                    // rewrite's E0338 left `ExprKind::Error`): one cause, one error
+                    if matches!(a.value.kind, ExprKind::Error) {
                         self.poisoned = true;
                         continue;
                     }

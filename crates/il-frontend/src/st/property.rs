@@ -645,6 +645,8 @@ impl Rewriter<'_, '_> {
                     ),
                     "copy the property into a variable, pass that, and write the variable back to the property after the call",
                 );
+                // the mark the lowering reads: an `ExprKind::Error` argument is reported, so
+                // a plain VAR_IN_OUT given it has no E1088 besides
                 a.value.kind = ExprKind::Error;
             } else if output {
                 if let ExprKind::Place(p) = &mut a.value.kind {

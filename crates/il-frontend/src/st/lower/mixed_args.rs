@@ -15,7 +15,7 @@
 //! the last parameter or names a parameter also given by name (then the call is lowered as written
 //! and E3106 reports it).
 
-use super::super::ast::{Arg, ArgDir, Place};
+use super::super::ast::{Arg, ArgDir, ExprKind, Place};
 use super::PouLowering;
 use crate::ast::{PouKind, TypeRef, VarKind};
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
@@ -29,6 +29,9 @@ impl PouLowering<'_> {
         args: &[Arg],
         diags: &mut Diagnostics,
     ) -> Option<Vec<Arg>> {
+        if args.iter().all(|a| a.name.is_none()) {
+            return self.positional_outputs_named(callee, args, diags);
+        }
         let first_formal = args.iter().position(|a| a.name.is_some())?;
         let first_positional = args.iter().position(|a| a.name.is_none())?;
         let params = self.parameter_order(callee)?;
@@ -66,6 +69,128 @@ impl PouLowering<'_> {
             );
         }
         Some(named)
+    }
+
+    /// A non-formal call that gives the outputs too: `Split(x, lo, hi)` with `Split`'s VAR_INPUT
+    /// `x` and VAR_OUTPUTs `lo`, `hi` (IEC 61131-3 ed. 3, 6.6.1.4.2: a non-formal call lists the
+    /// parameters of the definition in their order; SIMATIC AX writes it). With as many arguments
+    /// as the function's or block's inputs, in-outs and outputs together, each argument is named
+    /// after its parameter, the outputs' `=>` (a variable receives the output). With as many as
+    /// the inputs and in-outs, the call is left as it is (the outputs are not read). A user
+    /// function given another number of arguments is one E1020 here, in ST's words (sema's speaks
+    /// of IL's current result). `None`: the call is lowered as written.
+    fn positional_outputs_named(
+        &mut self,
+        callee: &Place,
+        args: &[Arg],
+        diags: &mut Diagnostics,
+    ) -> Option<Vec<Arg>> {
+        let (params, function) = self.definition_order(callee)?;
+        let inputs: Vec<&String> = params
+            .iter()
+            .filter(|p| p.1 != VarKind::Output)
+            .map(|p| &p.0)
+            .collect();
+        let outputs = params.len() - inputs.len();
+        // (`F()` is a formal call giving no argument: its inputs keep their initial values)
+        if args.is_empty() {
+            return None;
+        }
+        if args.len() == inputs.len() {
+            // a function's VAR_IN_OUT given by position is bound to its variable: the call is
+            // made formal (`F(h)` as `F(io := h)`), the operator form would pass the first
+            // argument through the current result, a copy
+            if !function || !params.iter().any(|p| p.1 == VarKind::InOut) {
+                return None;
+            }
+            let params: Vec<&(String, VarKind)> =
+                params.iter().filter(|p| p.1 != VarKind::Output).collect();
+            let mut named = args.to_vec();
+            for (a, (p, _)) in named.iter_mut().zip(params) {
+                a.name = Some(crate::ast::Ident::new(p.clone(), a.span));
+            }
+            return Some(named);
+        }
+        if args.len() != params.len() || outputs == 0 {
+            if !function {
+                return None;
+            }
+            let name = callee.name().map_or(String::new(), |n| n.name.clone());
+            let list =
+                |v: Vec<&String>| v.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(", ");
+            let hint = if inputs.is_empty() && outputs == 0 {
+                format!("{name} has no parameters: call it without arguments (`{name}()`)")
+            } else if outputs == 0 {
+                format!("give its inputs in order: {}", list(inputs.clone()))
+            } else {
+                format!(
+                    "give its inputs in order ({}), or all its parameters in order ({})",
+                    list(inputs.clone()),
+                    list(params.iter().map(|p| &p.0).collect())
+                )
+            };
+            let also = if outputs == 0 {
+                String::new()
+            } else {
+                format!(" (or {} with its outputs)", params.len())
+            };
+            diags.push(
+                Diagnostic::error(
+                    code::E1020,
+                    format!(
+                        "{name} takes {} inputs{also}, {} given",
+                        inputs.len(),
+                        args.len()
+                    ),
+                )
+                .at(args
+                    .first()
+                    .map_or(callee.span, |a| a.span.to(args[args.len() - 1].span)))
+                .with_primary_label("wrong number of arguments")
+                .with_hint(hint),
+            );
+            self.poisoned = true;
+            return None;
+        }
+        let mut named = args.to_vec();
+        for (a, (p, kind)) in named.iter_mut().zip(&params) {
+            if *kind == VarKind::Output {
+                if !matches!(a.value.kind, ExprKind::Place(_)) {
+                    // (an output needs a variable to receive it: as written, sema says so)
+                    return None;
+                }
+                a.dir = ArgDir::Output { negated: false };
+            }
+            a.name = Some(crate::ast::Ident::new(p.clone(), a.span));
+        }
+        Some(named)
+    }
+
+    /// The parameters of `callee`'s definition in their order, each with its kind, and whether
+    /// `callee` is a user FUNCTION: a function's or a function block instance's (a method binds
+    /// its positional outputs itself, `Action::method_outputs`).
+    fn definition_order(&self, callee: &Place) -> Option<(Vec<(String, VarKind)>, bool)> {
+        // (a method's hidden inputs are the method's, not the block's)
+        let of_pou = |p: &super::super::types::PouInterface| {
+            p.params()
+                .filter(|v| {
+                    !v.0.to_ascii_uppercase()
+                        .starts_with(crate::actions::METHOD_PREFIX)
+                })
+                .map(|v| (v.0.clone(), v.1))
+                .collect::<Vec<_>>()
+        };
+        if let Some(name) = callee.name() {
+            if self.env().var_type(name).is_none() || self.function_beside_global(name) {
+                let p = self.decls.pou(&name.name)?;
+                return (p.kind == PouKind::Function).then(|| (of_pou(p), true));
+            }
+        }
+        if let Some(TypeRef::Named(t)) = self.env().place_type(callee) {
+            let p = self.decls.pou(&t.name)?;
+            return (p.kind == PouKind::FunctionBlock).then(|| (of_pou(p), false));
+        }
+        None
     }
 
     /// The parameters a non-formal call of `callee` binds, in order: a function's, a program's or
