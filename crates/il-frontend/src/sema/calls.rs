@@ -1523,6 +1523,18 @@ impl Body<'_, '_> {
                 }
                 let t = self.read_operand(&fa.value);
                 let s = fa.value.span();
+                if pdir == ParamDir::InOut && self.in_out_type_differs(&t, &pty, s, &pname, callee) {
+                    rec.args.push((
+                        ArgBinding {
+                            param: pname,
+                            output: false,
+                            ty: Type::Error,
+                            source: ArgSource::Written(k),
+                        },
+                        Ty::Known(pty),
+                    ));
+                    return;
+                }
                 let (pn, cn) = (pname.clone(), callee.to_string());
                 self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                 self.coerce(&t, &pty, s, |b, from, to| {
@@ -1609,6 +1621,46 @@ impl Body<'_, '_> {
                 self.arg_unchecked(fa);
             }
         }
+    }
+
+    /// An elementary variable given to an in-out of another elementary type (`r := i` for
+    /// `VAR_IN_OUT r : REAL` and `i : INT`): one E1012. An in-out passes the variable itself (IEC
+    /// 61131-3: its type is the in-out's), so no conversion can stand between them; the C would
+    /// write a REAL over a two-byte INT. A subrange counts as its integer type.
+    fn in_out_type_differs(
+        &mut self,
+        given: &Ty,
+        param: &Type,
+        at: Span,
+        pname: &str,
+        callee: &str,
+    ) -> bool {
+        let elementary = |t: &Type| match t {
+            Type::Elementary(e) => Some(*e),
+            Type::Subrange { base, .. } => Some(*base),
+            _ => None,
+        };
+        let Ty::Known(g) = given else {
+            return false;
+        };
+        let (Some(a), Some(b)) = (elementary(g), elementary(param)) else {
+            return false;
+        };
+        if a == b {
+            return false;
+        }
+        let (from, to) = (self.a.type_name(g), self.a.type_name(param));
+        self.a
+            .error(
+                code::E1012,
+                at,
+                format!("in-out {pname} of {callee} is {to}, not {from}"),
+            )
+            .label(format!("this variable is {from}"))
+            .hint(format!(
+                "an in-out passes the variable itself, so its type must be {to}: declare it {to}, or copy through a {to} variable before and after the call"
+            ));
+        true
     }
 
     fn unknown_param(&mut self, name: &ast::Ident, callee: &str, params: &[String]) {
