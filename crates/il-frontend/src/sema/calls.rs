@@ -1142,6 +1142,20 @@ impl Body<'_, '_> {
                 for ((t, s, source), p) in ins.into_iter().zip(inputs) {
                     let pname = p.name.clone();
                     let fname = pou.name.clone();
+                    if p.kind == VarKind::InOut
+                        && self.in_out_type_differs(&t, &p.ty, s, &pname, &fname)
+                    {
+                        rec.args.push((
+                            ArgBinding {
+                                param: pname,
+                                output: false,
+                                ty: Type::Error,
+                                source,
+                            },
+                            Ty::Known(p.ty.clone()),
+                        ));
+                        continue;
+                    }
                     self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                     self.coerce(&t, &p.ty, s, |b, from, to| {
                         if b.a.passing_any_address {
@@ -1357,6 +1371,19 @@ impl Body<'_, '_> {
                     let t = self.read_operand(o);
                     let s = o.span();
                     let (pname, tn) = (p.0.clone(), tname.clone());
+                    if p.1 == ParamDir::InOut && self.in_out_type_differs(&t, &p.2, s, &pname, &tn)
+                    {
+                        rec.args.push((
+                            ArgBinding {
+                                param: p.0.clone(),
+                                output: false,
+                                ty: Type::Error,
+                                source: ArgSource::Written(k),
+                            },
+                            Ty::Known(p.2.clone()),
+                        ));
+                        continue;
+                    }
                     self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                     self.coerce(&t, &p.2, s, |b, from, to| {
                         if b.a.passing_any_address {
@@ -1523,7 +1550,8 @@ impl Body<'_, '_> {
                 }
                 let t = self.read_operand(&fa.value);
                 let s = fa.value.span();
-                if pdir == ParamDir::InOut && self.in_out_type_differs(&t, &pty, s, &pname, callee) {
+                if pdir == ParamDir::InOut && self.in_out_type_differs(&t, &pty, s, &pname, callee)
+                {
                     rec.args.push((
                         ArgBinding {
                             param: pname,
@@ -1624,9 +1652,12 @@ impl Body<'_, '_> {
     }
 
     /// An elementary variable given to an in-out of another elementary type (`r := i` for
-    /// `VAR_IN_OUT r : REAL` and `i : INT`): one E1012. An in-out passes the variable itself (IEC
-    /// 61131-3: its type is the in-out's), so no conversion can stand between them; the C would
-    /// write a REAL over a two-byte INT. A subrange counts as its integer type.
+    /// `VAR_IN_OUT r : REAL` and `i : INT`, a WORD to a DWORD, a BOOL to a BYTE): one E1012, by
+    /// name or by position, of a block, function, method or `CAL`. An in-out passes the variable
+    /// itself (IEC 61131-3 ed. 3, 6.6.1.2.2: its type is the in-out's; CODESYS and TwinCAT refuse
+    /// it), so no conversion (not even a widening one) can stand between them; the C would write a
+    /// REAL over a two-byte INT. A subrange counts as its integer type, an enumeration as the DINT
+    /// it is stored as (so an enumeration and a DINT in-out pass, W1439 as for values).
     fn in_out_type_differs(
         &mut self,
         given: &Ty,
@@ -1635,9 +1666,11 @@ impl Body<'_, '_> {
         pname: &str,
         callee: &str,
     ) -> bool {
+        // the C storage of the value: an enumeration is a DINT there
         let elementary = |t: &Type| match t {
             Type::Elementary(e) => Some(*e),
             Type::Subrange { base, .. } => Some(*base),
+            Type::Enum(_) => Some(Elementary::Dint),
             _ => None,
         };
         let Ty::Known(g) = given else {
@@ -1658,7 +1691,7 @@ impl Body<'_, '_> {
             )
             .label(format!("this variable is {from}"))
             .hint(format!(
-                "an in-out passes the variable itself, so its type must be {to}: declare it {to}, or copy through a {to} variable before and after the call"
+                "an in-out passes the variable itself, so its type must be {to}: declare it {to}, or copy it through a variable of type {to} before and after the call"
             ));
         true
     }
