@@ -12,6 +12,7 @@
 //!   bounds but the same size, a derived instance to an in-out of its base;
 //! - an array of another size or a structure of another type (even of the same size) is E1012
 //!   (unchanged: no conversion between them);
+//! - a `VAR_IN_OUT CONSTANT` given a variable of another type too (a variable is passed by address);
 //! - the same for a PLCopen XML block's in-out pin (FBD/LD box), said at the variable wired to it;
 //! - a STRING[10] given to an in-out STRING (CODESYS and TwinCAT accept it; their manuals say the
 //!   lengths "should" be equal): every string is stored with the runtime's whole capacity, so the
@@ -63,8 +64,8 @@ const BOXES: &str = r#"<?xml version="1.0" encoding="utf-8"?>
 "#;
 
 /// The repro of the sweep: an INT given to a block's and a method's `VAR_IN_OUT r : REAL` by
-/// name. One E1012 each, at the argument, exit 1 (before: compiled; the C wrote the REAL's four
-/// bytes over the two-byte INT).
+/// name (and to the method's by position). One E1012 each, at the argument, exit 1 (before:
+/// compiled; the C wrote the REAL's four bytes over the two-byte INT).
 #[test]
 fn an_int_given_to_a_real_in_out_is_one_error_per_call() {
     let src = "FUNCTION_BLOCK FB
@@ -83,6 +84,7 @@ f.Bump(r := i);
 g(r := j);
 f.Bump(r := x);
 g(r := x);
+f.Bump(j);
 END_PROGRAM
 ";
     let (code, lines) = check_text("io.st", src);
@@ -96,6 +98,9 @@ END_PROGRAM
             "io.st:14:8: error[E1012]: in-out r of FB2 is REAL, not INT (hint: an in-out passes \
              the variable itself, so its type must be REAL: declare it REAL, or copy it through a \
              variable of type REAL before and after the call)",
+            "io.st:17:8: error[E1012]: in-out Bump.r of FB is REAL, not INT (hint: an in-out \
+             passes the variable itself, so its type must be REAL: declare it REAL, or copy it \
+             through a variable of type REAL before and after the call)",
         ]
     );
 }
@@ -408,4 +413,33 @@ fn a_box_in_out_pin_checks_the_type_of_its_variable() {
     let (trace, _) = run_text("box.xml", &fixed, 2, "Main.i,Main.x");
     assert_eq!(column(&trace, "Main.i"), vec![1.5, 3.0]);
     assert_eq!(column(&trace, "Main.x"), vec![1.5, 3.0]);
+}
+
+/// A `VAR_IN_OUT CONSTANT r : LREAL` given an INT variable: a variable is passed by address there
+/// too (a literal or expression goes through a temporary), so it is E1012 as well (before:
+/// compiled, the callee read eight bytes from the two-byte INT); the literal still runs.
+#[test]
+fn a_constant_in_out_takes_a_variable_of_its_type_or_a_value() {
+    let src = "FUNCTION Twice : LREAL
+VAR_IN_OUT CONSTANT r : LREAL; END_VAR
+Twice := r * 2.0;
+END_FUNCTION
+PROGRAM Main
+VAR i : INT := 3; y : LREAL; END_VAR
+y := Twice(r := i);
+END_PROGRAM
+";
+    let (code, lines) = check_text("ioc.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    let heads: Vec<&str> = lines
+        .iter()
+        .map(|l| l.split(" (hint").next().unwrap())
+        .collect();
+    assert_eq!(
+        heads,
+        vec!["ioc.st:7:17: error[E1012]: in-out r of Twice is LREAL, not INT"]
+    );
+    let fixed = src.replace("Twice(r := i)", "Twice(r := 3.5)");
+    let (trace, _) = run_text("ioc.st", &fixed, 1, "Main.y");
+    assert_eq!(column(&trace, "Main.y"), vec![7.0]);
 }
