@@ -126,6 +126,7 @@ impl Gen<'_> {
             b.indent += 1;
         }
         let mut outputs = Vec::new();
+        let mut shortened = Vec::new();
         for binding in &info.args {
             if binding.param.eq_ignore_ascii_case("EN") || binding.param.eq_ignore_ascii_case("ENO")
             {
@@ -144,9 +145,19 @@ impl Gen<'_> {
                     continue;
                 };
                 match self.operand_place(b.scope, o) {
-                    Some(Place::Mem { lv: target, .. }) => {
+                    Some(place @ Place::Mem { .. }) => {
                         let raw = self.fb_param_raw(&lv, fb, &binding.param);
-                        b.line_fmt(format_args!("{raw} = &{target};"));
+                        if let Place::Mem { lv: target, .. } = &place {
+                            b.line_fmt(format_args!("{raw} = &{target};"));
+                        }
+                        let param = match fb {
+                            FbType::User(id) => self.pou_var(id, &binding.param).map(|v| &v.ty),
+                            FbType::Standard(_) => None,
+                        };
+                        if let Some(cut) = param.and_then(|p| self.shorter_string_in_out(&place, p))
+                        {
+                            shortened.push(cut);
+                        }
                     }
                     _ => self.unsupported(o.span(), "this argument for an IN_OUT parameter"),
                 }
@@ -166,6 +177,9 @@ impl Gen<'_> {
             b.line(&format!("{lv}.ENO = 1;"));
         }
         b.line(&invoke(self, &lv, fb));
+        for cut in shortened {
+            b.line(&cut);
+        }
         self.store_outputs(b, &lv, fb, &outputs, args);
         if en.is_some() {
             b.indent -= 1;
@@ -213,6 +227,27 @@ impl Gen<'_> {
             };
             let v = convert(&v, &binding.ty, target.ty());
             self.store_line(b, &target, &v);
+        }
+    }
+
+    /// A STRING[n] variable given to an in-out of a longer string type (`VAR_IN_OUT s : STRING`):
+    /// CODESYS and TwinCAT accept it (their manuals: the lengths "should" be the same), the callee
+    /// writes up to its in-out's length. Every string is stored with the runtime's whole capacity,
+    /// so no byte is written past the variable; this statement, run after the call, cuts the
+    /// variable back to its own length so that it never holds more than it declares.
+    fn shorter_string_in_out(&self, place: &Place, param: &Type) -> Option<String> {
+        match (place, param) {
+            (
+                Place::Mem {
+                    lv,
+                    ty: Type::String { wide, len },
+                },
+                Type::String {
+                    wide: pw,
+                    len: plen,
+                },
+            ) if wide == pw && len < plen => Some(self.store(place, lv)),
+            _ => None,
         }
     }
 
@@ -539,7 +574,14 @@ impl Gen<'_> {
                         ArgSource::CurrentResult => None,
                     });
                     match target.and_then(|o| self.operand_place(b.scope, &o)) {
-                        Some(Place::Mem { lv, .. }) => call_args.push(cfmt!("&{lv}")),
+                        Some(place @ Place::Mem { .. }) => {
+                            if let Place::Mem { lv, .. } = &place {
+                                call_args.push(cfmt!("&{lv}"));
+                            }
+                            if let Some(cut) = self.shorter_string_in_out(&place, &v.ty) {
+                                after_call.push(cut);
+                            }
+                        }
                         _ => {
                             self.unsupported(span, "a missing or located IN_OUT argument");
                             b.indent -= 1;

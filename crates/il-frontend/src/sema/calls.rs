@@ -1152,6 +1152,20 @@ impl Body<'_, '_> {
                 for ((t, s, source), p) in ins.into_iter().zip(inputs) {
                     let pname = p.name.clone();
                     let fname = pou.name.clone();
+                    if p.kind == VarKind::InOut
+                        && self.in_out_type_differs(&t, &p.ty, s, &pname, &fname)
+                    {
+                        rec.args.push((
+                            ArgBinding {
+                                param: pname,
+                                output: false,
+                                ty: Type::Error,
+                                source,
+                            },
+                            Ty::Known(p.ty.clone()),
+                        ));
+                        continue;
+                    }
                     self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                     self.coerce(&t, &p.ty, s, |b, from, to| {
                         if b.a.passing_any_address {
@@ -1367,6 +1381,19 @@ impl Body<'_, '_> {
                     let t = self.read_operand(o);
                     let s = o.span();
                     let (pname, tn) = (p.0.clone(), tname.clone());
+                    if p.1 == ParamDir::InOut && self.in_out_type_differs(&t, &p.2, s, &pname, &tn)
+                    {
+                        rec.args.push((
+                            ArgBinding {
+                                param: p.0.clone(),
+                                output: false,
+                                ty: Type::Error,
+                                source: ArgSource::Written(k),
+                            },
+                            Ty::Known(p.2.clone()),
+                        ));
+                        continue;
+                    }
                     self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                     self.coerce(&t, &p.2, s, |b, from, to| {
                         if b.a.passing_any_address {
@@ -1533,6 +1560,19 @@ impl Body<'_, '_> {
                 }
                 let t = self.read_operand(&fa.value);
                 let s = fa.value.span();
+                if pdir == ParamDir::InOut && self.in_out_type_differs(&t, &pty, s, &pname, callee)
+                {
+                    rec.args.push((
+                        ArgBinding {
+                            param: pname,
+                            output: false,
+                            ty: Type::Error,
+                            source: ArgSource::Written(k),
+                        },
+                        Ty::Known(pty),
+                    ));
+                    return;
+                }
                 let (pn, cn) = (pname.clone(), callee.to_string());
                 self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                 self.coerce(&t, &pty, s, |b, from, to| {
@@ -1619,6 +1659,51 @@ impl Body<'_, '_> {
                 self.arg_unchecked(fa);
             }
         }
+    }
+
+    /// An elementary variable given to an in-out of another elementary type (`r := i` for
+    /// `VAR_IN_OUT r : REAL` and `i : INT`, a WORD to a DWORD, a BOOL to a BYTE): one E1012, by
+    /// name or by position, of a block, function, method or `CAL`. An in-out passes the variable
+    /// itself (IEC 61131-3 ed. 3, 6.6.1.2.2: its type is the in-out's; CODESYS and TwinCAT refuse
+    /// it), so no conversion (not even a widening one) can stand between them; the C would write a
+    /// REAL over a two-byte INT. A subrange counts as its integer type, an enumeration as the DINT
+    /// it is stored as (so an enumeration and a DINT in-out pass, W1439 as for values).
+    fn in_out_type_differs(
+        &mut self,
+        given: &Ty,
+        param: &Type,
+        at: Span,
+        pname: &str,
+        callee: &str,
+    ) -> bool {
+        // the C storage of the value: an enumeration is a DINT there
+        let elementary = |t: &Type| match t {
+            Type::Elementary(e) => Some(*e),
+            Type::Subrange { base, .. } => Some(*base),
+            Type::Enum(_) => Some(Elementary::Dint),
+            _ => None,
+        };
+        let Ty::Known(g) = given else {
+            return false;
+        };
+        let (Some(a), Some(b)) = (elementary(g), elementary(param)) else {
+            return false;
+        };
+        if a == b {
+            return false;
+        }
+        let (from, to) = (self.a.type_name(g), self.a.type_name(param));
+        self.a
+            .error(
+                code::E1012,
+                at,
+                format!("in-out {pname} of {callee} is {to}, not {from}"),
+            )
+            .label(format!("this variable is {from}"))
+            .hint(format!(
+                "an in-out passes the variable itself, so its type must be {to}: declare it {to}, or copy it through a variable of type {to} before and after the call"
+            ));
+        true
     }
 
     fn unknown_param(&mut self, name: &ast::Ident, callee: &str, params: &[String]) {
