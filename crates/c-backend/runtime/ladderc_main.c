@@ -109,6 +109,27 @@ static int resolve(const char *name, ladderc_var *out, char *err, size_t errlen)
             return 0;
         }
     }
+    /* `P1.n` when two configurations (or resources) each have an instance `P1`: their variables
+       are traced as `CfgA.P1.n` and `CfgB.P1.n`; the unqualified name is refused, listing them */
+    if (strchr(name, '.')) {
+        size_t nlen = strlen(name), found = 0, used;
+        for (i = 0; i < ladderc_var_count; i++) {
+            size_t len = strlen(ladderc_vars[i].name);
+            if (len > nlen && ladderc_vars[i].name[len - nlen - 1] == '.' &&
+                ieq(ladderc_vars[i].name + len - nlen, name))
+                found++;
+        }
+        if (found > 1) {
+            used = (size_t)snprintf(err, errlen, "`%s` is ambiguous: instances of one name in several configurations or resources are named by them:", name);
+            for (i = 0; i < ladderc_var_count && used < errlen; i++) {
+                size_t len = strlen(ladderc_vars[i].name);
+                if (len > nlen && ladderc_vars[i].name[len - nlen - 1] == '.' &&
+                    ieq(ladderc_vars[i].name + len - nlen, name))
+                    used += (size_t)snprintf(err + used, errlen - used, " `%s`", ladderc_vars[i].name);
+            }
+            return -1;
+        }
+    }
     for (i = 0; i < ladderc_var_count; i++) {
         if (ieq(last_part(ladderc_vars[i].name), last_part(name))) {
             snprintf(err, errlen, "unknown variable `%s`: did you mean `%s`? (a run without --watch traces every variable; a built program lists them with --list)",

@@ -800,13 +800,9 @@ fn pou_header(ctx: &mut Ctx, p: &Element) -> Option<Pou> {
         }
     }
     ctx.local_constants.clear();
-    if kind == PouKind::Function && return_type.is_none() {
-        ctx.error(
-            code::E3013,
-            span,
-            format!("function `{}` has no <returnType>", name.name),
-        );
-    }
+    // A function without `<returnType>` is a function without result (TC6 v2.01: `returnType`
+    // has minOccurs=0; IEC 61131-3 ed.3 6.6.2.2: the result type may be left out), read as the
+    // same `FUNCTION F` in ST is: it gives its results through VAR_OUTPUT.
     Some(Pou {
         class: false,
         kind,

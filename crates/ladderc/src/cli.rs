@@ -984,6 +984,15 @@ fn run_program(
             if let Some(tmp) = tmp {
                 let _ = std::fs::remove_file(tmp);
             }
+            // `--watch P1.n` of instances `P1` in two configurations: the harness refused the
+            // ambiguous name (listing the qualified ones), a usage error
+            if out
+                .stderr
+                .lines()
+                .any(|l| l.starts_with("error: --watch: `") && l.contains("` is ambiguous: "))
+            {
+                return EXIT_USAGE;
+            }
             EXIT_DIAGNOSTICS
         }
     }

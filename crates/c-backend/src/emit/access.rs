@@ -133,9 +133,13 @@ impl<'a> Gen<'a> {
             in_scope && model.global(r).name.eq_ignore_ascii_case(&first.name)
         });
         let inst = instances.iter().find(|i| {
-            i.configured
-                .is_some_and(|(c, r, _)| c == ci && resource.is_none_or(|x| x == r))
-                && i.watch_name.eq_ignore_ascii_case(&first.name)
+            i.configured.is_some_and(|(c, r, p)| {
+                c == ci
+                    && resource.is_none_or(|x| x == r)
+                    && model.configurations[c].resources[r].programs[p]
+                        .name
+                        .eq_ignore_ascii_case(&first.name)
+            })
         });
         let (start, members, first_member) = match (inst, global) {
             (Some(inst), _) if path.len() > 1 => {

@@ -104,7 +104,24 @@ impl Gen<'_> {
         // EN := e / ENO => v (IEC 61131-3: with EN FALSE the instance is not called and its ENO
         // is FALSE; ladderc skips the whole call, inputs and `=>` copies included, as a ladder
         // rung's CALC does)
-        let (en, eno_target) = self.en_eno(b, args);
+        let (mut en, mut eno_target) = self.en_eno(b, args);
+        // EN/ENO the block declares itself (IEC 61131-3 ed.3 6.6.1.6, as matiec's
+        // add_en_eno_param_decl reads them): they are its enable input and output, kept in the
+        // instance: the call stores EN, the body runs only while it is TRUE (and reads it), and
+        // the declared ENO is TRUE when the body starts, FALSE when it does not run
+        let declared = |name: &str| match fb {
+            FbType::User(id) => self.pou_var(id, name).map(|v| v.kind),
+            FbType::Standard(_) => None,
+        };
+        let declared_en = declared("EN") == Some(VarKind::Input);
+        let declared_eno = declared("ENO") == Some(VarKind::Output);
+        if declared_eno {
+            eno_target = None;
+        }
+        let en_given = en.take();
+        if !declared_en {
+            en = en_given.clone();
+        }
         let user_eno = matches!(fb, FbType::User(_)) && self.model.fb_eno_read;
         if eno_target.is_some() && matches!(fb, FbType::User(_)) && !user_eno {
             self.unsupported(
@@ -120,6 +137,13 @@ impl Gen<'_> {
             None => b.line("{"),
         }
         b.indent += 1;
+        if declared_en {
+            let field = self.fb_param_lvalue(&lv, fb, "EN");
+            if let Some(e) = &en_given {
+                b.line(&format!("{field} = (IEC_BOOL)({e});"));
+            }
+            en = Some(field);
+        }
         if let Some(e) = &en {
             b.line(&format!("IEC_BOOL ladderc_en = (IEC_BOOL)({e});"));
             b.line("if (ladderc_en) {");
@@ -127,7 +151,12 @@ impl Gen<'_> {
         }
         let mut outputs = Vec::new();
         let mut shortened = Vec::new();
+        let mut eno_output = Vec::new();
         for binding in &info.args {
+            if declared_eno && binding.output && binding.param.eq_ignore_ascii_case("ENO") {
+                eno_output.push(binding.clone());
+                continue;
+            }
             if binding.param.eq_ignore_ascii_case("EN") || binding.param.eq_ignore_ascii_case("ENO")
             {
                 continue;
@@ -176,6 +205,10 @@ impl Gen<'_> {
             // TRUE unless the body sets it FALSE (IEC 61131-3: ENO of a block that ran)
             b.line(&format!("{lv}.ENO = 1;"));
         }
+        if declared_eno {
+            let field = self.fb_param_lvalue(&lv, fb, "ENO");
+            b.line(&format!("{field} = 1;"));
+        }
         b.line(&invoke(self, &lv, fb));
         for cut in shortened {
             b.line(&cut);
@@ -193,6 +226,13 @@ impl Gen<'_> {
         if user_eno && en.is_some() {
             // not called: ENO is FALSE
             b.line(&format!("if (!ladderc_en) {lv}.ENO = 0;"));
+        }
+        if declared_eno {
+            if en.is_some() {
+                let field = self.fb_param_lvalue(&lv, fb, "ENO");
+                b.line(&format!("if (!ladderc_en) {field} = 0;"));
+            }
+            self.store_outputs(b, &lv, fb, &eno_output, args);
         }
         if let Some(p) = eno_target {
             self.store_line(b, &p, if user_eno { &user_eno_value } else { eno });
@@ -517,6 +557,11 @@ impl Gen<'_> {
         b.indent += 1;
         let mut call_args = Vec::new();
         let mut after_call = Vec::new();
+        // EN/ENO the function declares itself (IEC 61131-3 ed.3 6.6.1.6; matiec's
+        // add_en_eno_param_decl): its EN input is the enable (the body runs only while it is
+        // TRUE, and reads it), its ENO output starts TRUE and is FALSE when the body does not run
+        let mut declared_en = None;
+        let mut declared_eno = None;
         for v in pou
             .vars
             .iter()
@@ -538,6 +583,13 @@ impl Gen<'_> {
                         b.line("}");
                         return;
                     };
+                    if v.name.eq_ignore_ascii_case("EN") && v.ty == Type::BOOL {
+                        let t = b.temp();
+                        b.line_fmt(format_args!("IEC_BOOL {t} = (IEC_BOOL)({val});"));
+                        declared_en = Some(t.clone());
+                        call_args.push(t);
+                        continue;
+                    }
                     call_args.push(val);
                 }
                 VarKind::Output => {
@@ -545,11 +597,17 @@ impl Gen<'_> {
                     let Some(decl) = ctypes::declare(self.model, &v.ty, &t) else {
                         continue;
                     };
-                    let init = if v.ty.elementary().is_some() {
+                    let is_eno = v.name.eq_ignore_ascii_case("ENO") && v.ty == Type::BOOL;
+                    let init = if is_eno {
+                        "1"
+                    } else if v.ty.elementary().is_some() {
                         "0"
                     } else {
                         "{0}"
                     };
+                    if is_eno {
+                        declared_eno = Some(None);
+                    }
                     b.line_fmt(format_args!("{decl} = {init};"));
                     call_args.push(cfmt!("&{t}"));
                     if let Some(bd) = &binding {
@@ -563,6 +621,10 @@ impl Gen<'_> {
                                     };
                                     let val = convert(&val, &v.ty, target.ty());
                                     after_call.push(self.store(&target, &val));
+                                    if is_eno {
+                                        let off = convert("0", &v.ty, target.ty());
+                                        declared_eno = Some(Some(self.store(&target, &off)));
+                                    }
                                 }
                             }
                         }
@@ -595,7 +657,13 @@ impl Gen<'_> {
         // EN/ENO (IEC 61131-3 Table 18): with EN FALSE the function is not executed, its result
         // is its type's initial value, its outputs are not written and ENO is FALSE; else ENO is
         // TRUE unless the body resets it
-        let (en, eno_target) = self.en_eno(b, args);
+        let (mut en, mut eno_target) = self.en_eno(b, args);
+        if declared_en.is_some() {
+            en = declared_en;
+        }
+        if declared_eno.is_some() {
+            eno_target = None;
+        }
         let eno = b.temp();
         b.line_fmt(format_args!("IEC_BOOL {eno} = 1;"));
         call_args.push(cfmt!("&{eno}"));
@@ -642,6 +710,9 @@ impl Gen<'_> {
                 }
             }
             b.line_fmt(format_args!("{eno} = 0;"));
+            if let Some(Some(off)) = &declared_eno {
+                b.line(off);
+            }
             b.indent -= 1;
             b.line("}");
         }

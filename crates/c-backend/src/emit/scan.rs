@@ -70,12 +70,44 @@ impl Gen<'_> {
                 }
             }
         } else {
+            // an instance name that two configurations (or two resources of one) share is traced
+            // qualified by its configuration (`CfgB.P1.n`), its resource (`R2.P1.n`) or both, as
+            // IEC 61131-3's access paths name it (ed.3 6.8.2: `resource.program.variable`); a
+            // name no other instance has stays as it is (`P1.n`)
+            let all: Vec<(usize, usize, &str)> = self
+                .model
+                .configurations
+                .iter()
+                .enumerate()
+                .flat_map(|(ci, cfg)| {
+                    cfg.resources.iter().enumerate().flat_map(move |(ri, r)| {
+                        r.programs.iter().map(move |p| (ci, ri, p.name.as_str()))
+                    })
+                })
+                .collect();
+            let watch_name = |ci: usize, ri: usize, name: &str| {
+                let same = || all.iter().filter(|x| x.2.eq_ignore_ascii_case(name));
+                let other_config = same().any(|x| x.0 != ci);
+                let other_resource = same().any(|x| x.0 == ci && x.1 != ri);
+                let cfg = &self.model.configurations[ci];
+                let mut w = String::new();
+                if other_config {
+                    w.push_str(&cfg.name);
+                    w.push('.');
+                }
+                if other_resource {
+                    w.push_str(&cfg.resources[ri].name);
+                    w.push('.');
+                }
+                w.push_str(name);
+                w
+            };
             for (ci, cfg) in self.model.configurations.iter().enumerate() {
                 for (ri, r) in cfg.resources.iter().enumerate() {
                     for (pi, p) in r.programs.iter().enumerate() {
                         v.push(Instance {
                             c_name: mangle::program_instance(ci, ri, &p.name),
-                            watch_name: p.name.clone(),
+                            watch_name: watch_name(ci, ri, &p.name),
                             pou: p.pou,
                             configured: Some((ci, ri, pi)),
                             called_only: false,
@@ -83,6 +115,10 @@ impl Gen<'_> {
                     }
                 }
             }
+            // configurations that declare no program instance (the empty `config`/`resource1`
+            // Beremiz writes into every export): every PROGRAM runs as without a configuration
+            // (W1453 says so, at the configuration)
+            let unconfigured = v.is_empty();
             // programs in no resource that other POUs call, use by name or whose actions they call
             for (i, p) in self.model.pous.iter().enumerate() {
                 let id = PouId(i as u32);
@@ -91,7 +127,7 @@ impl Gen<'_> {
                         .iter()
                         .any(|v| v.name.starts_with(il_frontend::actions::FLAG_PREFIX));
                 if p.kind == PouKind::Program
-                    && used
+                    && (used || (unconfigured && !is_br_once_program(&p.name)))
                     && !is_init_program(&p.name)
                     && !v.iter().any(|x| x.pou == id)
                 {
@@ -100,7 +136,7 @@ impl Gen<'_> {
                         watch_name: il_frontend::program_watch_name(&p.name).to_string(),
                         pou: id,
                         configured: None,
-                        called_only: true,
+                        called_only: !unconfigured,
                     });
                 }
             }

@@ -361,7 +361,49 @@ impl Analyzer<'_> {
                 self.declare_resource(ci, ri, r);
             }
         }
+        self.configurations_without_programs(&configs);
         pous
+    }
+
+    /// W1453 when the CONFIGURATIONs declare no program instance at all (Beremiz writes an empty
+    /// `config` with an empty `resource1` into every export): IEC 61131-3 runs only the programs
+    /// a resource associates with tasks, so ladderc runs every PROGRAM as without a
+    /// configuration, and says so once, at the first configuration.
+    fn configurations_without_programs(&mut self, configs: &[&ast::Configuration]) {
+        let Some(first) = configs.first() else {
+            return;
+        };
+        if configs
+            .iter()
+            .any(|c| c.resources.iter().any(|r| !r.programs.is_empty()))
+        {
+            return;
+        }
+        let programs: Vec<&str> = self
+            .model
+            .pous
+            .iter()
+            .filter(|p| p.kind == crate::ast::PouKind::Program)
+            .map(|p| p.name.as_str())
+            .collect();
+        let what = if configs.len() == 1 {
+            format!("configuration `{}` declares", first.name.name)
+        } else {
+            format!("the {} configurations declare", configs.len())
+        };
+        let message = match programs.as_slice() {
+            [] => format!("{what} no program instance, and there is no PROGRAM: nothing runs"),
+            [one] => format!(
+                "{what} no program instance: PROGRAM `{one}` runs each cycle as without a configuration"
+            ),
+            more => format!(
+                "{what} no program instance: the {} PROGRAMs run each cycle as without a configuration",
+                more.len()
+            ),
+        };
+        self.warning(code::W1453, first.name.span, message)
+            .label("no `PROGRAM inst WITH task : P;` in its resources")
+            .hint("declare the program instances in a RESOURCE (`PROGRAM Main1 WITH t : Main;`), or leave the empty CONFIGURATION out");
     }
 
     /// The scalar (elementary, string, enumerated) constants of the project's VAR_GLOBAL CONSTANT
