@@ -1817,10 +1817,19 @@ impl<'d> PouLowering<'d> {
                     if !matches!(a.value.kind, ExprKind::Place(_))
                         && plain_in_outs.contains(&name.key()) =>
                 {
-                    // (a property given there already has its E0338: one cause, one error)
-                    let property = diags
-                        .iter()
-                        .any(|d| d.code == code::E0338 && d.span == Some(a.value.span));
+                    // (a property given there already has its E0338, an argument that is an
+                    // error already its own error, `Unknown(x)^`'s E1019: one cause, one error)
+                    let within = |s: Option<Span>| {
+                        s.is_some_and(|s| {
+                            s.file == a.value.span.file
+                                && s.start >= a.value.span.start
+                                && s.end <= a.value.span.end
+                        })
+                    };
+                    let property = diags.iter().any(|d| {
+                        (d.code == code::E0338 && d.span == Some(a.value.span))
+                            || (d.severity == diagnostics::Severity::Error && within(d.span))
+                    });
                     if property {
                         self.poisoned = true;
                         continue;
