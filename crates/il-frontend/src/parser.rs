@@ -1967,8 +1967,108 @@ pub(crate) fn run(
     }
     // Lexer/layout diagnostics and grammar diagnostics interleave by position.
     all.sort_by_key(|d| d.span.map(|s| (s.start, s.end)));
+    one_error_per_list(src, base, &mut all);
     diags.extend(all);
     parsed
+}
+
+/// The text of `src` without its `(* ... *)` comments and strings (their bytes blanked): what
+/// [`one_error_per_list`] counts parentheses in.
+fn without_comments(src: &str) -> Vec<u8> {
+    let b = src.as_bytes();
+    let mut out = b.to_vec();
+    let mut k = 0;
+    while k < b.len() {
+        let end = if b[k..].starts_with(b"(*") {
+            src[k + 2..].find("*)").map_or(b.len(), |e| k + 2 + e + 2)
+        } else if b[k..].starts_with(b"//") {
+            src[k..].find('\n').map_or(b.len(), |e| k + e)
+        } else if b[k] == b'\'' || b[k] == b'"' {
+            let q = b[k];
+            b[k + 1..]
+                .iter()
+                .position(|&c| c == q || c == b'\n')
+                .map_or(b.len(), |e| k + 1 + e + 1)
+                .min(b.len())
+        } else {
+            k += 1;
+            continue;
+        };
+        for c in &mut out[k..end] {
+            if *c != b'\n' {
+                *c = b' ';
+            }
+        }
+        k = end;
+    }
+    out
+}
+
+/// One error for one broken parenthesised IL list (issue #13: one cause, one diagnostic):
+/// - after `expected `:=` or `=>`` in a formal CAL's argument list (`Q` alone on its line,
+///   `=> done,` on the next: IEC 61131-3 ed. 2 B.2.2 puts one assignment on one line), the syntax
+///   errors up to the list's `)` are left out;
+/// - a `)` on its own line is no "unmatched `)`" when an earlier line that holds an error opened
+///   a parenthesis (`ADD( %MF3` with an invalid operand: the grammar dropped that line, its `)`
+///   matches it).
+fn one_error_per_list(src: &str, base: usize, all: &mut Vec<Diagnostic>) {
+    let local = |d: &Diagnostic| {
+        d.span
+            .map(|s| (s.start as usize).saturating_sub(base).min(src.len()))
+    };
+    let is = |d: &Diagnostic, start: &str| d.code == code::E0011 && d.message.starts_with(start);
+    let broken_list = |d: &Diagnostic| is(d, "expected `:=` or `=>`");
+    let unmatched = |d: &Diagnostic| is(d, "unmatched `)`");
+    if !all.iter().any(|d| broken_list(d) || unmatched(d)) {
+        return;
+    }
+    let text = without_comments(src);
+    // the byte after the `)` that closes the list open at `from`
+    let list_end = |from: usize| {
+        let mut depth = 0usize;
+        for (k, &c) in text.iter().enumerate().skip(from) {
+            match c {
+                b'(' => depth += 1,
+                b')' if depth == 0 => return k + 1,
+                b')' => depth -= 1,
+                _ => {}
+            }
+        }
+        text.len()
+    };
+    let mut quiet: Vec<(usize, usize)> = Vec::new();
+    // the lines with an error that open more parentheses than they close: (line start, count)
+    let mut openers: Vec<(usize, usize)> = Vec::new();
+    for d in all.iter() {
+        let Some(at) = local(d) else { continue };
+        if broken_list(d) {
+            quiet.push((at, list_end(at)));
+        }
+        if d.severity != diagnostics::Severity::Error || unmatched(d) {
+            continue;
+        }
+        let start = src[..at].rfind('\n').map_or(0, |i| i + 1);
+        let end = src[at..].find('\n').map_or(src.len(), |i| at + i);
+        let line = &text[start..end];
+        let open = line.iter().filter(|&&c| c == b'(').count();
+        let close = line.iter().filter(|&&c| c == b')').count();
+        if open > close && !openers.iter().any(|o| o.0 == start) {
+            openers.push((start, open - close));
+        }
+    }
+    all.retain(|d| {
+        let Some(at) = local(d) else { return true };
+        if d.code == code::E0011 && quiet.iter().any(|&(s, e)| at > s && at < e) {
+            return false;
+        }
+        if unmatched(d) {
+            if let Some(o) = openers.iter_mut().rev().find(|o| o.0 < at && o.1 > 0) {
+                o.1 -= 1;
+                return false;
+            }
+        }
+        true
+    });
 }
 
 /// The deepest nesting of parenthesised lists (`AND( ... ADD( ... ) ... )`) accepted in IL.

@@ -164,10 +164,59 @@ fn named(name: &str, consts: &Constants) -> Result<Layout, String> {
         _ if consts.contains_key(&block_key(name)) => Err(format!(
             "`{name}` is a function block: the size of its instance is known in code (`SIZEOF(x)` in a body), not while declarations are read"
         )),
-        _ => Err(format!(
-            "the size of `{name}` is not known (no data type or variable of that name declared before, in this file or another given file)"
-        )),
+        _ => {
+            let prefix = format!("{HOLDS}{} ", name.to_ascii_uppercase());
+            match consts.keys().filter_map(|k| k.strip_prefix(&prefix)).min() {
+                // a type declared with a field of a type declared nowhere: that type is the cause
+                // (sema's E1003 names it, and then this one is left out: [`held_unknown`])
+                Some(held) => Err(format!(
+                    "the size of `{name}` is not known: it holds `{held}`{DECLARED_NOWHERE}"
+                )),
+                None => Err(format!(
+                    "the size of `{name}` is not known (no data type or variable of that name declared before, in this file or another given file)"
+                )),
+            }
+        }
     }
+}
+
+/// The key prefix marking a declared type whose size is not known because it holds a type declared
+/// nowhere (`HOLDS ST_LOG T_VendorSeverity`: the type, then the unknown type as written).
+const HOLDS: &str = "HOLDS ";
+
+/// The end of the reason [`named`] gives for a type that holds a type whose size is not known.
+const DECLARED_NOWHERE: &str = ", whose size is not known";
+
+/// The type declared nowhere that `why` (a reason of [`of_type`]) names as the cause: the type
+/// itself when it is not declared, or the unknown type a declared one holds.
+pub fn held_unknown(why: &str) -> Option<&str> {
+    if let Some(rest) = why.strip_prefix("the size of `") {
+        let (name, tail) = rest.split_once('`')?;
+        if tail.starts_with(" is not known (no data type") {
+            return Some(name);
+        }
+        let held = tail.strip_prefix(" is not known: it holds `")?;
+        let (held, tail) = held.split_once('`')?;
+        return (tail == DECLARED_NOWHERE).then_some(held);
+    }
+    None
+}
+
+/// Marks `name` as holding the unknown type that `why` names (see [`HOLDS`]).
+fn mark_unknown(consts: &mut Constants, name: &str, why: &str) {
+    if let Some(held) = held_unknown(why) {
+        let key = format!("{HOLDS}{} {held}", name.to_ascii_uppercase());
+        consts.insert(key, ConstNum::Int(0));
+    }
+}
+
+/// Whether the E0022 message `message` (`constant expression ...: <reason>`) is about a type that
+/// holds `unknown`, a type declared nowhere (sema's E1003 for `unknown` is then the one error).
+pub fn is_about_unknown(message: &str, unknown: &str) -> bool {
+    message
+        .split_once("`: ")
+        .and_then(|(_, why)| held_unknown(why))
+        .is_some_and(|held| held.eq_ignore_ascii_case(unknown))
 }
 
 /// The layout of a structure (or a union) of `fields`: a base's fields first, flattened.
@@ -247,8 +296,9 @@ pub fn add_declared(consts: &mut Constants, decl: &TypeDecl) {
             structs: &structs,
         },
     );
-    if let Ok(l) = layout {
-        insert(consts, &decl.name.name, l);
+    match layout {
+        Ok(l) => insert(consts, &decl.name.name, l),
+        Err(why) => mark_unknown(consts, &decl.name.name, &why),
     }
 }
 
@@ -314,6 +364,40 @@ pub fn project_sizes<'a>(
         }
         if left.is_empty() || left.len() == before {
             break;
+        }
+    }
+    // the types left hold a type whose size is not known: each is marked with the innermost one
+    // (`A` holds `B`, which holds `X` declared nowhere: `A` holds `X`), a declared one last
+    let left_names: std::collections::HashSet<String> = left
+        .iter()
+        .map(|d| d.name.name.to_ascii_uppercase())
+        .collect();
+    let mut unmarked = left;
+    for last in [false, true] {
+        loop {
+            let mut marks = Vec::new();
+            unmarked.retain(|d| {
+                let known = Known {
+                    consts: &consts,
+                    structs: &structs,
+                };
+                let Err(why) = declared(d, &known) else {
+                    return true;
+                };
+                let inner = held_unknown(&why)
+                    .is_some_and(|h| !left_names.contains(&h.to_ascii_uppercase()));
+                if inner || last {
+                    marks.push((d.name.name.clone(), why));
+                    return false;
+                }
+                true
+            });
+            if marks.is_empty() {
+                break;
+            }
+            for (name, why) in marks {
+                mark_unknown(&mut consts, &name, &why);
+            }
         }
     }
     consts

@@ -542,16 +542,24 @@ impl Session {
                 self.codesys_files.push(file);
             }
             if detected && !v23_export && openplc_v4_json_body(src).is_none() {
-                self.diags.push(
-                    Diagnostic::new(
-                        code::W0302,
-                        diagnostics::Severity::Note,
-                        format!("read as {} (detected from the content)", file_lang.name()),
+                // an IEC 61131-10 XML file is no PLCopen XML: the note says what the E3002 after
+                // it says (ladderc does not read that format)
+                let (what, hint) = if file_lang == Lang::Xml && is_iec_61131_10(src) {
+                    (
+                        "detected from the content as IEC 61131-10 XML, which ladderc does not read"
+                            .to_string(),
+                        "give the POUs as ST, IL or PLCopen TC6 XML",
                     )
-                    .at(diagnostics::Span::new(file, 0, 0))
-                    .with_hint(
+                } else {
+                    (
+                        format!("read as {} (detected from the content)", file_lang.name()),
                         "name the file .il, .st or .xml, or pass --lang il|st|xml, to choose",
-                    ),
+                    )
+                };
+                self.diags.push(
+                    Diagnostic::new(code::W0302, diagnostics::Severity::Note, what)
+                        .at(diagnostics::Span::new(file, 0, 0))
+                        .with_hint(hint),
                 );
             }
             // a CODESYS V2.3 object file (`<pou>`, `<dut>`, `<gvl>` root): its texts as an ST file
@@ -1390,6 +1398,9 @@ impl Session {
                     .strip_prefix("unknown type `")
                     .is_some_and(|rest| rest.split('`').next().is_some_and(|name| !provided(name)))
         }));
+        // `SIZEOF(ST_Log)` with `ST_Log` holding a field of a type declared nowhere: that type's
+        // E1003 is the one error, the E0022 of the size left out (one cause)
+        il_frontend::sema::without_sizes_of_unknown(&mut self.diags);
     }
 
     fn analyze(&mut self, units: &[CompilationUnit]) -> il_frontend::sema::Model {
@@ -1956,4 +1967,15 @@ fn is_codesys_xml(src: &str) -> bool {
     let header = &src[at..];
     let header = &header[..header.find('>').unwrap_or(header.len())];
     header.contains("CODESYS") || header.contains("3S-Smart Software Solutions")
+}
+
+/// Whether `src` is an IEC 61131-10 XML exchange file (`<Project
+/// xmlns="www.iec.ch/public/TC65SC65BWG7TF10">`), which `ladder_compiler::project` refuses (E3002).
+fn is_iec_61131_10(src: &str) -> bool {
+    let mut end = src.len().min(4096);
+    while !src.is_char_boundary(end) {
+        end -= 1;
+    }
+    let head = &src[..end];
+    head.contains("<Project") && head.contains("TC65SC65BWG7")
 }

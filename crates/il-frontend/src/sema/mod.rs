@@ -165,7 +165,30 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
     }
     a.report_unknown_enums();
     a.count_unknown_types();
+    without_sizes_of_unknown(a.diags);
     a.model
+}
+
+/// Leaves out of `diags` each E0022 of `SIZEOF(T)` in a constant expression whose `T` holds a type
+/// that an E1003 of `diags` reports declared nowhere (or is that type): the E1003 names the one
+/// cause ([`crate::type_sizes::held_unknown`]).
+pub fn without_sizes_of_unknown(diags: &mut Diagnostics) {
+    let unknown: Vec<String> = diags
+        .iter()
+        .filter(|d| d.code == code::E1003)
+        .filter_map(|d| {
+            let rest = d.message.strip_prefix("unknown type `")?;
+            rest.split('`').next().map(str::to_string)
+        })
+        .collect();
+    if !unknown.is_empty() {
+        diags.retain(|d| {
+            d.code != code::E0022
+                || !unknown
+                    .iter()
+                    .any(|u| crate::type_sizes::is_about_unknown(&d.message, u))
+        });
+    }
 }
 
 /// The analysis state shared by the stages.

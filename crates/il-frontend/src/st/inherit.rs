@@ -1055,7 +1055,14 @@ impl Rewrite<'_> {
 fn type_key(t: &TypeRef) -> String {
     match t {
         TypeRef::Named(i) => i.key(),
-        TypeRef::String { wide, length, .. } => format!("STRING{wide}{length:?}"),
+        // (also shown in messages: the IEC spelling, `STRING(80)`, `WSTRING`)
+        TypeRef::String { wide, length, .. } => {
+            let s = if *wide { "WSTRING" } else { "STRING" };
+            match length {
+                Some(n) => format!("{s}({n})"),
+                None => s.to_string(),
+            }
+        }
         TypeRef::Array { dims, element, .. } => {
             let d: Vec<String> = dims
                 .iter()
@@ -1076,7 +1083,7 @@ fn type_key(t: &TypeRef) -> String {
                 .collect();
             format!("({})", v.join(","))
         }
-        TypeRef::Ref { kind, target, .. } => format!("{kind:?} TO {}", type_key(target)),
+        TypeRef::Ref { kind, target, .. } => format!("{} {}", kind.keyword(), type_key(target)),
     }
 }
 
@@ -1093,15 +1100,50 @@ fn signature(m: &PendingMethod) -> String {
     s
 }
 
-/// A method's signature for a message: `M(a : INT) : BOOL`.
+/// A method's signature for a message: `M(a : INT) : BOOL`; a variable-length in-out as written
+/// (`a : ARRAY[*] OF LREAL`), not as its hidden inputs (`varlen`).
 fn shown(m: &PendingMethod) -> String {
-    let ins: Vec<String> = m
+    let mut ins: Vec<String> = Vec::new();
+    for v in m
         .blocks
         .iter()
         .filter(|b| b.kind == VarKind::Input)
         .flat_map(|b| b.vars.iter())
-        .map(|v| format!("{} : {}", v.name.name, type_key(&v.ty)))
-        .collect();
+    {
+        let up = v.name.name.to_ascii_uppercase();
+        let hidden = |suffix: &str| {
+            up.rfind(suffix).is_some_and(|k| {
+                let d = &up[k + suffix.len()..];
+                k > 0 && !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit())
+            })
+        };
+        if hidden(super::varlen::LOWER) || hidden(super::varlen::UPPER) {
+            continue;
+        }
+        match (up.strip_suffix(super::varlen::ADDRESS), &v.ty) {
+            (Some(base), TypeRef::Ref { target, .. }) if !base.is_empty() => {
+                let rank = m
+                    .blocks
+                    .iter()
+                    .flat_map(|b| b.vars.iter())
+                    .filter(|w| {
+                        let w = w.name.name.to_ascii_uppercase();
+                        w.strip_prefix(base)
+                            .and_then(|r| r.strip_prefix(super::varlen::LOWER))
+                            .is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+                    })
+                    .count()
+                    .max(1);
+                ins.push(format!(
+                    "{} : ARRAY[{}] OF {}",
+                    &v.name.name[..base.len()],
+                    vec!["*"; rank].join(", "),
+                    type_key(target)
+                ));
+            }
+            _ => ins.push(format!("{} : {}", v.name.name, type_key(&v.ty))),
+        }
+    }
     let ret = m
         .ret
         .as_ref()
@@ -1146,6 +1188,14 @@ fn check_implements(
         };
         todo.extend(i.extends.iter().map(Ident::key));
         for m in &i.methods {
+            // the interface's method with its variable-length in-outs split as the block's
+            // methods are (`varlen`): `a : ARRAY[*] OF T` is then the same on both sides
+            let mut split = m.clone();
+            let m = if super::varlen::split_blocks(&mut split.blocks) {
+                &split
+            } else {
+                m
+            };
             match methods.iter().find(|x| x.name.key() == m.name.key()) {
                 // a property the interface declares (its accessor `__GET_P` / `__SET_P`)
                 None if super::property::is_accessor(&m.name.name) => {

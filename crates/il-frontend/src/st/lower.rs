@@ -1817,9 +1817,21 @@ impl<'d> PouLowering<'d> {
                     if !matches!(a.value.kind, ExprKind::Place(_))
                         && plain_in_outs.contains(&name.key()) =>
                 {
-                    // an argument already reported (a property given there: the property
-                    // rewrite's E0338 left `ExprKind::Error`): one cause, one error
-                    if matches!(a.value.kind, ExprKind::Error) {
+                    // an argument already reported: a property given there (the property
+                    // rewrite's E0338 left `ExprKind::Error`), or an argument with an error of its
+                    // own, such as `Unknown(x)^`'s E1019: one cause, one error
+                    let within = |s: Option<Span>| {
+                        s.is_some_and(|s| {
+                            s.file == a.value.span.file
+                                && s.start >= a.value.span.start
+                                && s.end <= a.value.span.end
+                        })
+                    };
+                    if matches!(a.value.kind, ExprKind::Error)
+                        || diags
+                            .iter()
+                            .any(|d| d.severity == diagnostics::Severity::Error && within(d.span))
+                    {
                         self.poisoned = true;
                         continue;
                     }

@@ -101,7 +101,7 @@ fn hidden(v: &VarDecl) -> Vec<VarDecl> {
 
 /// Splits every variable-length VAR_IN_OUT among `blocks` into its hidden inputs, keeping the
 /// order of the parameters (a block is cut where its kind changes). Whether one was split.
-fn split_blocks(blocks: &mut Vec<VarBlock>) -> bool {
+pub(super) fn split_blocks(blocks: &mut Vec<VarBlock>) -> bool {
     if !blocks
         .iter()
         .any(|b| b.kind == VarKind::InOut && b.vars.iter().any(|v| is_variable(&v.ty)))
@@ -250,6 +250,54 @@ fn own(env: &Env, name: &str) -> Option<(usize, TypeRef)> {
         .take_while(|d| env.vars.contains_key(&format!("{up}{LOWER}{d}")))
         .count();
     (rank > 0).then(|| (rank, (**target).clone()))
+}
+
+/// Operators a vendor's compiler knows without a declaration (lowered on their own, not
+/// [`crate::sema::stdlib`] functions): a variable-length array passed whole to one stays E1072.
+const OPERATORS: &[&str] = &[
+    "SIZEOF",
+    "XSIZEOF",
+    "ADR",
+    "ADRINST",
+    "BITADR",
+    "REF",
+    "MEMCPY",
+    "MEMMOVE",
+    "MEMSET",
+    "MEMCMP",
+    "SYSMEMCPY",
+    "SYSMEMMOVE",
+    "SYSMEMSET",
+    "SYSMEMCMP",
+    "LOWER_BOUND",
+    "UPPER_BOUND",
+    "__NEW",
+    "__DELETE",
+    "__ISVALIDREF",
+    "__QUERYINTERFACE",
+    "__QUERYPOINTER",
+];
+
+/// Whether `callee` names a function nothing declares (no POU, method, variable, type, standard
+/// function, conversion or operator of that name): sema reports it (E1019).
+fn unknown_function(env: &Env, callee: &Place) -> bool {
+    let PlaceBase::Name(n) = &callee.base else {
+        return false;
+    };
+    let own_method = || {
+        env.decls
+            .methods
+            .get(&env.pou_name.name.to_ascii_uppercase())
+            .is_some_and(|ms| ms.iter().any(|m| n.is(&m.name)))
+    };
+    callee.accessors.is_empty()
+        && env.decls.pou(&n.name).is_none()
+        && env.var_type(n).is_none()
+        && env.decls.type_decl(&n.name).is_none()
+        && crate::sema::stdlib::function(&n.name).is_none()
+        && crate::sema::stdlib::conversion(&n.name).is_none()
+        && !OPERATORS.iter().any(|o| n.is(o))
+        && !own_method()
 }
 
 /// What a call calls, as far as the lifetime of the descriptors it is given matters.
@@ -708,7 +756,20 @@ impl Rewrite<'_, '_> {
             params_of(self.env, callee)
         };
         let Some((params, kind)) = params else {
+            let unknown = unknown_function(self.env, callee);
             for a in args.iter_mut() {
+                // a parameter of this POU passed whole to a function nobody declared: that
+                // function's E1019 is the one error (its parameter may well be `ARRAY [*]`); the
+                // argument is its address, as sema does not look at an unknown call's arguments
+                if let (true, ExprKind::Place(p)) = (unknown, &a.value.kind) {
+                    if let (PlaceBase::Name(n), true) = (&p.base, p.accessors.is_empty()) {
+                        if own(self.env, &n.name).is_some() {
+                            a.value = name_expr(format!("{}{ADDRESS}", n.name), a.value.span);
+                            self.changed = true;
+                            continue;
+                        }
+                    }
+                }
                 self.expr(&mut a.value);
             }
             return;

@@ -59,6 +59,26 @@ impl PouLowering<'_> {
         (!known).then_some(t)
     }
 
+    /// The name `callee` when it is a plain name that nothing declares: no POU, variable,
+    /// global list, type, action, method of the block, standard function or conversion.
+    fn unknown_function(&self, callee: &Place) -> Option<Ident> {
+        let (PlaceBase::Name(n), []) = (&callee.base, callee.accessors.as_slice()) else {
+            return None;
+        };
+        let key = n.key();
+        let known = n.name.starts_with("__")
+            || self.env().var_type(n).is_some()
+            || self.decls.global_lists.contains_key(&key)
+            || self.decls.pou(&n.name).is_some()
+            || self.decls.types.contains_key(&key)
+            || self.actions.contains_key(&key)
+            || self.il_actions.contains_key(&key)
+            || self.methods.contains_key(&key)
+            || crate::sema::stdlib::function(&n.name).is_some()
+            || crate::sema::stdlib::conversion(&n.name).is_some();
+        (!known).then(|| n.clone())
+    }
+
     /// The name `p` starts with (`cell` of `cell.Units[1].Home()`) when it names nothing: no
     /// variable, global, global list, POU, type or action (a call right after it, `Get(1).x`, is
     /// the block's own method or a function, and is left alone).
@@ -156,6 +176,24 @@ impl PouLowering<'_> {
                     {
                         return false;
                     }
+                }
+                if let Some(n) = self.unknown_function(&callee) {
+                    // `AsAxisRef(axis)^` with `AsAxisRef` declared nowhere (a vendor library's
+                    // function): the missing function is the cause, named once (as sema's E1019
+                    // of a plain call), not the access of its result
+                    let message = format!("unknown function `{}`", n.name);
+                    if !diags
+                        .iter()
+                        .any(|d| d.code == code::E1019 && d.message == message)
+                    {
+                        diags.push(
+                            Diagnostic::error(code::E1019, message)
+                                .at(n.span)
+                                .with_primary_label("no such function")
+                                .with_hint("use an IEC standard function, a conversion X_TO_Y, or declare the FUNCTION (its other calls are not reported)"),
+                        );
+                    }
+                    return false;
                 }
                 diags.push(
                     Diagnostic::error(
