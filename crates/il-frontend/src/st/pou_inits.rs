@@ -284,8 +284,8 @@ fn structured_fields(
     let mut fields = Vec::new();
     let mut depth = 0i32;
     let mut first = 1;
-    for j in 1..value.len() - 1 {
-        match value[j].tok {
+    for (j, t) in value.iter().enumerate().take(value.len() - 1).skip(1) {
+        match t.tok {
             Tok::LParen | Tok::LBracket => depth += 1,
             Tok::RParen | Tok::RBracket => depth -= 1,
             Tok::Comma if depth == 0 => {
