@@ -6,14 +6,14 @@
 //!   the global's initial value (before: E1025 "an initial value must be a constant", or E0022);
 //! - a pointer whose initial value is an address with a computed index (`motionOnline : POINTER TO
 //!   WORD := ADR(registers[indexMotionOnline]);`) starts pointing there (before: E0305, which
-//!   called the pointer "a reference"); where it cannot be computed (a global list) E0305 names a
-//!   pointer;
+//!   called the pointer "a reference"); in a global list too, before the first cycle (round 28;
+//!   before: E0305 naming a pointer);
 //! - an integer constant set from an enumeration's value (`MAX_TOPICS : INT :=
 //!   E_Topics.NUMBER_OF_TOPICS;`, LKinGitHub's PackML and Rohlik) bounds an array, as one set from
 //!   a literal does (before: E0022 at the bound).
 
 mod common;
-use common::{column, rejected_heads, run_text, run_traced_files};
+use common::{column, run_text, run_traced_files};
 
 /// CODESYS and TwinCAT take any ST expression as an initial value, "constants, other variables or
 /// functions" (CODESYS "Variable Initialization"): a global's element and a global in an
@@ -108,17 +108,17 @@ END_PROGRAM
     assert!(!stderr.contains("error"), "{stderr}");
 }
 
-/// A global list's pointer has no initialisation of its POU to compute its address in: one E0305,
-/// which calls it a pointer (before: "a reference").
+/// A global list's pointer whose address has a computed index is computed before the first cycle
+/// (round 28, `initial_values_r28_run.rs`; before: one E0305, which called it a pointer).
 #[test]
-fn a_pointer_of_a_global_list_names_a_pointer() {
-    assert_eq!(
-        rejected_heads(
-            "gvl.st",
-            "VAR_GLOBAL\n    gArr : ARRAY[0..3] OF INT;\n    gI : INT := 1;\n    gP : POINTER TO INT := ADR(gArr[gI]);\nEND_VAR\nPROGRAM Main\nVAR x : INT; END_VAR\nx := gP^;\nEND_PROGRAM\n",
-        ),
-        ["gvl.st:4:25: error[E0305]: a pointer cannot have the initial value `ADR(gArr[gI])`"]
+fn a_pointer_of_a_global_list_is_computed_before_the_first_cycle() {
+    let (trace, stderr) = run_text(
+        "gvl.st",
+        "VAR_GLOBAL\n    gArr : ARRAY[0..3] OF INT := [4, 5, 6, 7];\n    gI : INT := 1;\n    gP : POINTER TO INT := ADR(gArr[gI]);\nEND_VAR\nPROGRAM Main\nVAR x : INT; END_VAR\nx := gP^;\nEND_PROGRAM\n",
+        1,
+        "Main.x",
     );
+    assert_eq!(column(&trace, "Main.x"), [5.0], "{stderr}");
 }
 
 /// `N : INT := E_Topic.COUNT_OF;` (an enumeration without `{attribute 'strict'}`, as its number)

@@ -1273,6 +1273,32 @@ impl<'s> Ctx<'s> {
                 }
             }
         }
+        // `e : (A := 1, B := 2) UDINT := 1;` (CODESYS, TwinCAT: an implicit enumeration, whose
+        // values are numbers): an integer initial value is the value of that number
+        let init = match (&ty, init) {
+            (TypeRef::Enum { values, .. }, Some(Initializer::Value(Operand::Literal(lit))))
+                if matches!(lit.kind, LiteralKind::Int(_)) && lit.type_prefix.is_none() =>
+            {
+                let LiteralKind::Int(n) = lit.kind else {
+                    unreachable!()
+                };
+                let mut next = 0i128;
+                let named = values.iter().find_map(|v| {
+                    let number = v.value.unwrap_or(next);
+                    next = number + 1;
+                    (number == n).then(|| v.name.clone())
+                });
+                match named {
+                    Some(name) => Some(Initializer::Value(Operand::Var(VarRef {
+                        base: Ident::new(&name.name, lit.span),
+                        accessors: Default::default(),
+                        span: lit.span,
+                    }))),
+                    None => Some(Initializer::Value(Operand::Literal(lit))),
+                }
+            }
+            (_, init) => init,
+        };
         let span = self.span(l, r);
         names
             .into_iter()

@@ -230,7 +230,11 @@ pub fn add_init_calls(
             || data_types.contains(&key)
             || crate::sema::StdFb::from_name(&key).is_some()
     };
-    if !has_fb_init && args.is_empty() {
+    // the global lists' initial values computed at run time (`pou_inits::global_run_time_inits`)
+    let global_inits = pending
+        .iter()
+        .any(|pb| pb.name_start == usize::MAX && !pb.var_inits.is_empty());
+    if !has_fb_init && args.is_empty() && !global_inits {
         return;
     }
     // every POU's kind and variables
@@ -396,6 +400,30 @@ pub fn add_init_calls(
             ));
         }
         diags.push(d);
+    }
+    // the global lists' initial values computed at run time (`pou_inits::global_run_time_inits`):
+    // first, in the order of the files, before the global instances' FB_init
+    let mut computed = Vec::new();
+    for pb in pending.iter().filter(|pb| pb.name_start == usize::MAX) {
+        for (file, text, base, prefixed) in &pb.var_inits {
+            let at = Span::new(*file, *base, *base);
+            let reader = Pou {
+                class: false,
+                kind: PouKind::Program,
+                name: Ident::new(PROGRAM, at),
+                return_type: None,
+                var_blocks: Vec::new(),
+                body: Vec::new(),
+                span: at,
+            };
+            let mut stmts = super::parse_statements_of(*file, text, *base, &reader, diags);
+            super::pou_inits::prefix_fields(&mut stmts, prefixed);
+            computed.extend(stmts);
+        }
+    }
+    if !computed.is_empty() {
+        computed.append(&mut globals);
+        globals = computed;
     }
     if bodies.is_empty() && globals.is_empty() {
         return;

@@ -183,8 +183,14 @@ pub struct PendingBody {
     /// run before the instance's FB_init and, where that does not reach, when the POU first runs.
     /// A derived block's list starts with its bases' ([`super::inherit`]), root first, each in
     /// its file.
-    pub var_inits: Vec<(FileId, String, usize)>,
+    pub var_inits: Vec<VarInits>,
 }
+
+/// A POU's run-time initial values (`PendingBody::var_inits`): its file, the assignments (a text
+/// of the declarations' length), the text's offset in the file, and the assignments of the
+/// computed fields of structured initial values with the instance to put before their targets
+/// (`pou_inits::prefix_fields`).
+pub type VarInits = (FileId, String, usize, Vec<(Range<usize>, String)>);
 
 impl PendingBody {
     /// A body with no text, no action, method or FB_init argument, at `name_start` of `file`
@@ -2406,8 +2412,8 @@ fn parse_text_as_read(
                         )
                     })
                     .flatten();
-                let var_inits: Vec<(FileId, String, usize)> = found
-                    .map(|(cut, inits)| {
+                let var_inits: Vec<VarInits> = found
+                    .map(|(cut, inits, prefixed)| {
                         // W1433 once per POU, at the first
                         if let Some((name, value)) = cut.first() {
                             diags.push(super::pou_inits::computed_warning(
@@ -2419,7 +2425,7 @@ fn parse_text_as_read(
                             computed.push(r.clone());
                             blank(&mut text, r);
                         }
-                        (file, inits, from)
+                        (file, inits, from, prefixed)
                     })
                     .into_iter()
                     .collect();
@@ -2461,6 +2467,47 @@ fn parse_text_as_read(
         Problem::UnterminatedComment(r) => Some(r.start),
         _ => None,
     });
+    // the global lists outside the POUs: their initial values computed at run time, once before
+    // the first cycle (`pou_inits::global_run_time_inits`, `fb_init::add_init_calls`)
+    let mut global_inits: Vec<VarInits> = Vec::new();
+    let mut inside: Vec<Range<usize>> = pous
+        .iter()
+        .map(|p| p.name_range.start..p.body.end.max(p.name_range.end))
+        .collect();
+    inside.sort_by_key(|r| r.start);
+    let mut outside = Vec::new();
+    let mut at = 0;
+    for r in inside {
+        if r.start > at {
+            outside.push(at..r.start);
+        }
+        at = at.max(r.end);
+    }
+    outside.push(at..text.len());
+    for region in outside {
+        let Some((cut, inits, prefixed)) =
+            super::pou_inits::global_run_time_inits(&text, region.clone(), &file_globals)
+        else {
+            continue;
+        };
+        if let (Some((name, value)), true) = (cut.first(), global_inits.is_empty()) {
+            diags.push(super::pou_inits::computed_global_warning(
+                src.get(name.clone()).unwrap_or(""),
+                Span::new(file, value.start, value.end),
+            ));
+        }
+        for (_, r) in cut {
+            computed.push(r.clone());
+            blank(&mut text, r);
+        }
+        global_inits.push((file, inits, region.start, prefixed));
+    }
+    if !global_inits.is_empty() {
+        pending.push(PendingBody {
+            var_inits: global_inits,
+            ..PendingBody::empty(file, usize::MAX)
+        });
+    }
     for r in &var_config.0 {
         blank(&mut text, r.clone());
     }
@@ -2820,8 +2867,10 @@ pub fn compile_pending(
                 let computed: Vec<super::ast::Stmt> = pb
                     .var_inits
                     .iter()
-                    .flat_map(|(file, text, base)| {
-                        super::parse_statements_of(*file, text, *base, p, diags)
+                    .flat_map(|(file, text, base, prefixed)| {
+                        let mut stmts = super::parse_statements_of(*file, text, *base, p, diags);
+                        super::pou_inits::prefix_fields(&mut stmts, prefixed);
+                        stmts
                     })
                     .collect();
                 let at_instance_init = !computed.is_empty();

@@ -12,8 +12,11 @@
 //! expression where they are written, everything else blanked). `None` when there is none.
 //! Invariants: positions do not move (the assignments are parsed in place); only single-name
 //! declarations of VAR / VAR_TEMP blocks whose initial value holds a call or a `^` (a pointer's
-//! `THIS^.pRoot`, fisothemes/TwinCat-Dynamic-Collections) or `THIS` are taken (a constant or
-//! an array/structure initialiser `[..]`, `(a := 1)` after a type stays a declaration's).
+//! `THIS^.pRoot`, fisothemes/TwinCat-Dynamic-Collections) or `THIS` are taken, and those of an
+//! elementary or pointer type whose value is a (qualified) name (`pCopy : POINTER TO INT :=
+//! pHead;`, the block's pointer: Tc3_UnitTest; a constant's name so assigned is the same value)
+//! (a literal or an array/structure initialiser `[..]`, `(a := 1)` after a type stays a
+//! declaration's).
 //!
 //! A `VAR_INST` variable (TwinCAT: kept in the instance) is initialised once per instance, not at
 //! each call: `pSelf : POINTER TO FB_X := THIS;`, `nSeed : INT := THIS^.nBase * 10;`,
@@ -99,9 +102,28 @@ pub(super) fn split(decls: &str) -> Option<Split> {
             }
             continue;
         }
+        // `pCopy : POINTER TO INT := pHead;`, `n : INT := nCount;`: a variable's value (of the
+        // block, a global), read at each call as CODESYS initialises a method's locals; a name
+        // given to a variable of a user type (an interface started with an instance) stays the
+        // declaration's
+        let ty = toks.get(s + 2).map(word_at).unwrap_or("");
+        let pointer = ["POINTER", "REFERENCE"]
+            .iter()
+            .any(|w| ty.eq_ignore_ascii_case(w));
+        let elementary = crate::sema::Elementary::from_name(&ty.to_ascii_uppercase()).is_some();
+        let read_name = !d.constant
+            && (pointer || elementary)
+            && value.first().is_some_and(|t| t.tok == Tok::Ident)
+            && value.iter().all(|t| matches!(t.tok, Tok::Ident | Tok::Dot))
+            && !value.iter().any(|t| {
+                t.tok == Tok::Ident
+                    && ["NULL", "TRUE", "FALSE"]
+                        .iter()
+                        .any(|w| word_at(t).eq_ignore_ascii_case(w))
+            });
         if single
             && (!structured || one_field)
-            && (is_run_time_value(value) || this)
+            && (is_run_time_value(value) || this || read_name)
             && toks[end].tok == Tok::Semi
         {
             let from = toks[k].range.start;

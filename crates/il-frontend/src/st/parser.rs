@@ -1738,6 +1738,69 @@ impl<'s, 'd> Parser<'s, 'd> {
         }
     }
 
+    /// Whether the tokens from `n` on are `POINTER TO` or `REFERENCE TO` (a type, not a value).
+    fn at_pointer_type(&self, n: usize) -> bool {
+        let t = &self.toks[(self.pos + n).min(self.toks.len() - 1)];
+        *self.peek_at(n + 1) == Tok::Kw(Kw::To)
+            && t.tok == Tok::Ident
+            && ["POINTER", "REFERENCE"]
+                .iter()
+                .any(|w| self.text(t).eq_ignore_ascii_case(w))
+    }
+
+    /// `SIZEOF(POINTER TO T)`, `SIZEOF(REFERENCE TO T)` (CODESYS, TwinCAT: SIZEOF's operand may be
+    /// a data type): the size of an address, whatever `T`; read as `SIZEOF(LWORD)`, the 8 bytes of
+    /// a pointer on ladderc's 64-bit target (its generated C's `sizeof(void *)`). `name` is read,
+    /// the current token is `(`.
+    fn sizeof_pointer_type(&mut self, name: Ident, here: Span) -> Expr {
+        let open = self.bump();
+        let at = self.cur().range.clone();
+        let mut depth = 0usize;
+        loop {
+            match self.peek() {
+                Tok::LParen | Tok::LBracket => depth += 1,
+                Tok::RBracket => depth = depth.saturating_sub(1),
+                Tok::RParen if depth == 0 => break,
+                Tok::RParen => depth -= 1,
+                Tok::Semi | Tok::Eof => break,
+                _ => {}
+            }
+            self.bump();
+        }
+        let ty_span = self.span(at.start, self.prev_end().max(open.range.end));
+        if self.at(&Tok::RParen) {
+            self.bump();
+        } else {
+            let found = self.describe_current();
+            self.error_here(
+                code::E0100,
+                format!("expected `)` after SIZEOF's type, found {found}"),
+                "write `SIZEOF(POINTER TO INT)`",
+            );
+            return self.error_expr(here);
+        }
+        let value = Expr {
+            kind: ExprKind::Place(Place {
+                base: PlaceBase::Name(Ident::new("LWORD", ty_span)),
+                accessors: Vec::new(),
+                span: ty_span,
+            }),
+            span: ty_span,
+        };
+        Expr {
+            kind: ExprKind::Call {
+                name,
+                args: vec![Arg {
+                    name: None,
+                    dir: ArgDir::Input,
+                    value,
+                    span: ty_span,
+                }],
+            },
+            span: here.to(self.span(self.prev_end(), self.prev_end())),
+        }
+    }
+
     /// `( args )` after a call target.
     fn args(&mut self) -> Option<Vec<Arg>> {
         let open = self.bump();
@@ -2178,6 +2241,9 @@ impl<'s, 'd> Parser<'s, 'd> {
                     // `__NEW(POINTER TO T, n)` (CODESYS, TwinCAT): its first argument is a type,
                     // no expression; the lowering refuses the call (E0351, `lower::dynamic_memory`)
                     return self.skipped_call(name, here);
+                }
+                if (name.is("SIZEOF") || name.is("XSIZEOF")) && self.at_pointer_type(1) {
+                    return self.sizeof_pointer_type(name, here);
                 }
                 match self.args() {
                     Some(args) => Expr {

@@ -16,10 +16,16 @@
 //! whose index is computed (`p : POINTER TO WORD := ADR(regs[idx]);`) is computed too.
 //! Invariants: positions do not move; only single-name declarations of VAR, VAR_TEMP (and of
 //! VAR_INPUT, VAR_OUTPUT outside a FUNCTION, whose inputs hold their arguments) outside CONSTANT
-//! blocks are taken; a value that is a structure or array initialiser, holds a `^` or a `:=`,
-//! reads variables only inside `ADR(..)`, `REF(..)` (a name, or literal indices), `SIZEOF(..)`,
-//! or is a variable alone given to a variable of a user type (an interface started with an
-//! instance) stays the declaration's.
+//! blocks are taken; a value that is an array initialiser, holds a `^` or a `:=`, reads
+//! variables only inside `ADR(..)`, `REF(..)` (a name, or literal indices), `SIZEOF(..)`, or is a
+//! variable alone given to a variable of a user type (an interface started with an instance)
+//! stays the declaration's. A structure initialiser's fields that are computed so, or are
+//! `THIS^` (`fb : FB_X := (a := F(1), b := gCfg, c := 2, p := THIS^)`), become assignments
+//! `a := F(1);` in place, which [`prefix_fields`] makes `fb.a := F(1);` once parsed; the other
+//! fields stay the declaration's.
+//! The global lists outside POUs are read the same way ([`global_run_time_inits`]): a global
+//! (not CONSTANT) initialised from another global or by a call is assigned once before the first
+//! cycle.
 
 use super::lexer::{lex, Tok, Token};
 use super::method_inits::{blank, declarations};
@@ -108,11 +114,41 @@ pub(super) fn pou_run_time_inits(
     region: Range<usize>,
     function: bool,
     file_globals: &HashSet<String>,
-) -> Option<(Vec<Computed>, String)> {
+) -> Option<Found> {
+    run_time_inits(text, region, function, false, file_globals)
+}
+
+/// What [`pou_run_time_inits`] and [`global_run_time_inits`] find: the ranges (name, what is left
+/// out of the declaration), the assignments (a text of the region's length), and the assignments
+/// of structured values' fields with their instance ([`prefix_fields`]).
+pub(super) type Found = (Vec<Computed>, String, Vec<(Range<usize>, String)>);
+
+/// The run-time initial values of the global lists (`VAR_GLOBAL`, not CONSTANT) in
+/// `text[region]`, a text outside any POU: a global initialised from another global
+/// (`rAlpha : REAL := GVL.Pi;`) or by a call (`n : UDINT := TO_UDINT(LIMIT(1, a[2], 16));`), as
+/// CODESYS and TwinCAT allow. They run once, in the order of the text (the files in the order
+/// given), before the first cycle ([`super::fb_init::PROGRAM`]); until its assignment runs, a
+/// global so initialised holds its type's default value.
+pub(super) fn global_run_time_inits(
+    text: &str,
+    region: Range<usize>,
+    file_globals: &HashSet<String>,
+) -> Option<Found> {
+    run_time_inits(text, region, false, true, file_globals)
+}
+
+fn run_time_inits(
+    text: &str,
+    region: Range<usize>,
+    function: bool,
+    global_lists: bool,
+    file_globals: &HashSet<String>,
+) -> Option<Found> {
     let decls = text.get(region.clone())?;
     let toks = lex(decls).0;
     let mut inits = blank(decls);
     let mut cut = Vec::new();
+    let mut prefixed = Vec::new();
     let all = declarations(decls, &toks);
     // the variables declared before (upper-case, not constants), then the globals that no
     // constant of the POU hides
@@ -136,13 +172,64 @@ pub(super) fn pou_run_time_inits(
                 variables.insert(n.to_ascii_uppercase());
             }
         }
-        let block_taken = matches!(d.block.as_str(), "VAR" | "VAR_TEMP")
-            || (!function && matches!(d.block.as_str(), "VAR_INPUT" | "VAR_OUTPUT"));
+        let block_taken = if global_lists {
+            // (not CONSTANT: `VAR_GLOBAL RETAIN CONSTANT` too)
+            d.block == "VAR_GLOBAL"
+                && declared_names(decls, &toks, &d)
+                    .all(|n| globals.contains(&n.to_ascii_uppercase()))
+        } else {
+            matches!(d.block.as_str(), "VAR" | "VAR_TEMP")
+                || (!function && matches!(d.block.as_str(), "VAR_INPUT" | "VAR_OUTPUT"))
+        };
         let Some(k) = d.assign else { continue };
         if !block_taken || d.constant || !d.single || toks[d.end].tok != Tok::Semi {
             continue;
         }
         let value = &toks[k + 1..d.end];
+        // `fb : FB_X := (a := F(1, 2), b := gCfg, c := 5);`: the fields computed at run time
+        // become assignments `fb.a := F(1, 2);`, the others stay the declaration's
+        if let Some(fields) = structured_fields(decls, value, &variables, &globals) {
+            let name = toks[d.start].range.clone();
+            let label = &decls[name.clone()];
+            let all_run_time = fields.iter().all(|f| f.3);
+            if all_run_time {
+                let from = toks[k].range.start;
+                let to = toks[d.end - 1].range.end;
+                cut.push((
+                    region.start + name.start..region.start + name.end,
+                    region.start + from..region.start + to,
+                ));
+            }
+            let inner_end = value.len() - 1;
+            for (n, &(sep, a, b, rt)) in fields.iter().enumerate() {
+                if !rt {
+                    continue;
+                }
+                let field = value[a].range.start..value[b].range.end;
+                let after = value[b + 1].range.clone();
+                inits.replace_range(field.clone(), &decls[field.clone()]);
+                inits.replace_range(after.start..after.start + 1, ";");
+                prefixed.push((
+                    region.start + field.start..region.start + after.end,
+                    label.to_string(),
+                ));
+                if !all_run_time {
+                    // the field and one comma: its own after it, or (the last) the one before
+                    let (from, to) = if b + 1 < inner_end {
+                        (value[a].range.start, value[b + 1].range.end)
+                    } else if n > 0 {
+                        (value[sep].range.start, value[b].range.end)
+                    } else {
+                        (value[a].range.start, value[b].range.end)
+                    };
+                    cut.push((
+                        region.start + name.start..region.start + name.end,
+                        region.start + from..region.start + to,
+                    ));
+                }
+            }
+            continue;
+        }
         let plain = value
             .first()
             .is_some_and(|t| !matches!(t.tok, Tok::LParen | Tok::LBracket))
@@ -172,7 +259,88 @@ pub(super) fn pou_run_time_inits(
             inits.replace_range(stmt.clone(), &decls[stmt]);
         }
     }
-    (!cut.is_empty()).then_some((cut, inits))
+    (!cut.is_empty()).then_some((cut, inits, prefixed))
+}
+
+/// The fields of a structured initial value `value` (its tokens, `(` to `)`: `(a := 1, b :=
+/// F(x))`) when at least one is computed at run time (it calls a function, reads a variable
+/// declared before or a global, holds a `^` or `THIS`; [`run_time`]), each `(separator before,
+/// first token, last token, computed)` as indexes into `value`. `None` when none is, or when an
+/// element is not `field := expr` with an expression (a nested `(..)` or `[..]` initialiser stays
+/// the declaration's).
+fn structured_fields(
+    decls: &str,
+    value: &[Token],
+    variables: &HashSet<String>,
+    globals: &HashSet<String>,
+) -> Option<Vec<(usize, usize, usize, bool)>> {
+    if value.len() < 5
+        || value[0].tok != Tok::LParen
+        || value.last()?.tok != Tok::RParen
+        || !value.iter().any(|t| t.tok == Tok::Assign)
+    {
+        return None;
+    }
+    let mut fields = Vec::new();
+    let mut depth = 0i32;
+    let mut first = 1;
+    for (j, t) in value.iter().enumerate().take(value.len() - 1).skip(1) {
+        match t.tok {
+            Tok::LParen | Tok::LBracket => depth += 1,
+            Tok::RParen | Tok::RBracket => depth -= 1,
+            Tok::Comma if depth == 0 => {
+                fields.push((first - 1, first, j - 1));
+                first = j + 1;
+            }
+            _ => {}
+        }
+        if depth < 0 {
+            return None;
+        }
+    }
+    fields.push((first - 1, first, value.len() - 2));
+    let mut out = Vec::new();
+    for (sep, a, b) in fields {
+        let toks = value.get(a..=b)?;
+        if toks.len() < 3 || toks[0].tok != Tok::Ident || toks[1].tok != Tok::Assign {
+            return None;
+        }
+        let rest = &toks[2..];
+        let nested = matches!(rest[0].tok, Tok::LBracket)
+            || (rest[0].tok == Tok::LParen && rest.iter().any(|t| t.tok == Tok::Assign));
+        let this = rest.iter().any(|t| {
+            t.tok == Tok::Ident
+                && decls
+                    .get(t.range.clone())
+                    .is_some_and(|w| w.eq_ignore_ascii_case("THIS"))
+        });
+        let rt = !nested
+            && (this
+                || rest.iter().any(|t| t.tok == Tok::Caret)
+                || run_time(decls, rest, variables, globals));
+        out.push((sep, a, b, rt));
+    }
+    out.iter().any(|f| f.3).then_some(out)
+}
+
+/// Puts the instance before the targets of the field assignments a structured initial value's
+/// computed fields became ([`pou_run_time_inits`]'s third part: the range of each, the
+/// instance's name): `a := F(1);` at one of them is `fb.a := F(1);`.
+pub(super) fn prefix_fields(stmts: &mut [super::ast::Stmt], prefixed: &[(Range<usize>, String)]) {
+    use super::ast::{Accessor, PlaceBase, StmtKind};
+    for s in stmts {
+        let at = s.span.start as usize;
+        let Some((_, inst)) = prefixed.iter().find(|(r, _)| r.contains(&at)) else {
+            continue;
+        };
+        if let StmtKind::Assign { target, .. } = &mut s.kind {
+            if let PlaceBase::Name(field) = &target.base {
+                let field = field.clone();
+                target.base = PlaceBase::Name(crate::ast::Ident::new(inst, field.span));
+                target.accessors.insert(0, Accessor::Field(field));
+            }
+        }
+    }
 }
 
 /// Whether `value` calls a function other than [`NOT_READ`]'s, or reads one of `variables` or
@@ -234,4 +402,16 @@ pub(super) fn computed_warning(name: &str, at: crate::Span) -> diagnostics::Diag
     .at(at)
     .with_primary_label("calls a function or reads a variable")
     .with_hint("compiled as CODESYS and TwinCAT do: assigned in declaration order when the instance is initialised, before FB_init; for another IEC compiler assign it in the body")
+}
+
+/// W1433 at `at` (the first such initial value of a file's global lists, `:= expr`), of the
+/// global variable `name`.
+pub(super) fn computed_global_warning(name: &str, at: crate::Span) -> diagnostics::Diagnostic {
+    diagnostics::Diagnostic::warning(
+        diagnostics::code::W1433,
+        format!("the initial value of the global `{name}` is computed at run time: IEC 61131-3 takes a constant expression (the file's other such initial values are not reported)"),
+    )
+    .at(at)
+    .with_primary_label("calls a function or reads a variable")
+    .with_hint("compiled as CODESYS and TwinCAT do: assigned once before the first cycle, in the order of the text; a global read before its own assignment holds its type's default; for another IEC compiler assign it in a program")
 }

@@ -452,9 +452,12 @@ pub(super) fn library_qualifiers(
         let (Some(dot), Some(member)) = (toks.get(k + 1), toks.get(k + 2)) else {
             continue;
         };
+        // `Kinds.Mode#Fill` (SIMATIC AX): an enumeration's typed literal qualified by its
+        // namespace (IEC 61131-3 ed. 3, 6.9): the namespace is blanked below as before a name
+        let prefixed = member.tok == Tok::TypePrefix;
         if !ident(t)
             || dot.tok != Tok::Dot
-            || !ident(member)
+            || !(ident(member) || prefixed)
             // `THIS.M(...)`: edition 3's call of the block's own method (`parser::statements_in`), `SUPER.M(...)` its base's (`inherit`)
             || w == "THIS"
             || w == "SUPER"
@@ -493,13 +496,18 @@ pub(super) fn library_qualifiers(
                     .is_some_and(|t| ident(t) && word(src, t).eq_ignore_ascii_case(part))
                     && toks.get(k + 2 * n + 1).is_some_and(|d| d.tok == Tok::Dot)
             });
-            let member = toks.get(k + 2 * parts.len()).is_some_and(ident);
+            let member = toks
+                .get(k + 2 * parts.len())
+                .is_some_and(|m| ident(m) || m.tok == Tok::TypePrefix);
             (matches && member).then(|| toks[k + 2 * parts.len() - 1].range.end)
         }) {
             blank(
                 text.get_or_insert_with(|| src.to_string()),
                 t.range.start..end,
             );
+            continue;
+        }
+        if prefixed && !namespaces.contains(&w) {
             continue;
         }
         let text = text.get_or_insert_with(|| src.to_string());

@@ -301,7 +301,14 @@ impl RefTypes {
             return;
         } else if self.one_method_var
             && (super::method_inits::is_run_time_value(&toks[k + 1..end])
-                || value.eq_ignore_ascii_case("THIS"))
+                || value.eq_ignore_ascii_case("THIS")
+                // `pCopy : POINTER TO INT := pHead;`: another pointer's value, read when the
+                // method starts (`method_inits`)
+                || (!value.eq_ignore_ascii_case("NULL")
+                    && toks[from..end]
+                        .iter()
+                        .all(|t| matches!(t.tok, Tok::Ident | Tok::Dot))
+                    && toks.get(from).is_some_and(|t| t.tok == Tok::Ident)))
         {
             // `pCurrent : POINTER TO T := THIS^.pRoot;` in a method (CODESYS, TwinCAT,
             // fisothemes/TwinCat-Dynamic-Collections), `pSelf : POINTER TO FB_X := THIS;` in its
