@@ -1337,15 +1337,18 @@ impl Body<'_, '_> {
                 // `o`): named in the message (before round 26: "C has 0 inputs, 1 given" alone)
                 let first_output = params.iter().find(|p| p.1 == ParamDir::Output);
                 if let (true, Some(out)) = (ops.len() > inputs.len(), first_output) {
+                    // every parameter listed (IEC 61131-3 ed. 2 Table 53's `CAL C10(%IX10, FALSE,
+                    // A, OUT, B)`): ladderc binds such outputs only in ST calls of user blocks
+                    let why = if ops.len() == params.len() {
+                        "ladderc binds outputs given by position only in an ST call of a user block or function, not in IL's CAL nor for a standard block"
+                    } else {
+                        "an output of a block is given by position only in a call that lists all its parameters in order"
+                    };
                     self.a
                         .error(
                             code::E1020,
                             ops[inputs.len()].span(),
-                            format!(
-                                "{tname} has {} inputs, {} given: an output of a block is given by position only in a call that lists all its parameters in order",
-                                inputs.len(),
-                                ops.len()
-                            ),
+                            format!("{tname} has {} inputs, {} given: {why}", inputs.len(), ops.len()),
                         )
                         .label("one argument too many")
                         .hint(format!(
