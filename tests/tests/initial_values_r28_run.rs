@@ -275,3 +275,73 @@ END_PROGRAM
     let (trace, stderr) = run_text("ax.st", src, 1, "Main.n");
     assert_eq!(column(&trace, "Main.n"), vec![1.0], "{stderr}");
 }
+
+/// Computed fields side by side, first, last and between constant ones: each leaves with its own
+/// comma (before: `(x := 6, y := a, z := b)` left `(x := 6, )`, an E0011 "unexpected `)`" that
+/// hid a real project's other errors). s1 = (1, 2, 30, 40), s2 = (10, 1, 30, 2),
+/// s3 = (1, 20, 2, 1), s4 = (10, 20, 1, 2), read as w*1000 + x*100 + y + z.
+#[test]
+fn computed_fields_side_by_side_keep_the_constant_ones() {
+    let src = "TYPE ST4 : STRUCT
+    w : INT;
+    x : INT;
+    y : INT;
+    z : INT;
+END_STRUCT;
+END_TYPE
+
+PROGRAM Main
+VAR
+    a : INT := 1;
+    b : INT := 2;
+    s1 : ST4 := (w := a, x := b, y := 30, z := 40);
+    s2 : ST4 := (w := 10, x := a, y := 30, z := b);
+    s3 : ST4 := (w := a, x := 20, y := b, z := a);
+    s4 : ST4 := (w := 10, x := 20, y := a, z := b);
+    n1, n2, n3, n4 : INT;
+END_VAR
+n1 := s1.w * 1000 + s1.x * 100 + s1.y + s1.z;
+n2 := s2.w * 1000 + s2.x * 100 + s2.y + s2.z;
+n3 := s3.w * 1000 + s3.x * 100 + s3.y + s3.z;
+n4 := s4.w * 1000 + s4.x * 100 + s4.y + s4.z;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("mix.st", src, 1, "Main.n1,Main.n2,Main.n3,Main.n4");
+    assert!(!stderr.contains("error["), "{stderr}");
+    assert_eq!(column(&trace, "Main.n1"), vec![1270.0], "{trace}");
+    assert_eq!(column(&trace, "Main.n2"), vec![10132.0], "{trace}");
+    assert_eq!(column(&trace, "Main.n3"), vec![3003.0], "{trace}");
+    assert_eq!(column(&trace, "Main.n4"), vec![12003.0], "{trace}");
+}
+
+/// A global list's initial value reading another global (`b : INT := a + 1;`) is W1433 once, and
+/// no W1410 note about a program named `__FBINIT_ALL` (the hidden program ladderc makes for
+/// such values, in which the user cannot declare a VAR_EXTERNAL); b is 8.
+#[test]
+fn a_global_read_by_a_computed_initial_value_is_no_w1410() {
+    let src = "CONFIGURATION Cfg
+VAR_GLOBAL
+  a : INT := 7;
+  b : INT := a + 1;
+END_VAR
+RESOURCE Res ON PLC
+  TASK T(INTERVAL := T#10ms, PRIORITY := 1);
+  PROGRAM P WITH T : Main;
+END_RESOURCE
+END_CONFIGURATION
+
+PROGRAM Main
+VAR_EXTERNAL
+  b : INT;
+END_VAR
+VAR
+  n : INT;
+END_VAR
+n := b;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("glob.st", src, 1, "P.n");
+    assert!(!stderr.contains("__FBINIT"), "{stderr}");
+    assert!(!stderr.contains("W1410"), "{stderr}");
+    assert_eq!(column(&trace, "P.n"), vec![8.0], "{trace}");
+}

@@ -982,8 +982,11 @@ impl Body<'_, '_> {
         };
         let ty = self.a.type_name(&g.ty);
         let constant = if g.constant { " CONSTANT" } else { "" };
-        // given in the silent pass too: the declaration made here is found by every later use
-        self.a.diags.push(
+        // given in the silent pass too: the declaration made here is found by every later use;
+        // not of a POU ladderc made (`__FBINIT_ALL`, the global lists' computed initial values:
+        // IEC names cannot hold `__`), which the user cannot declare anything in
+        let hidden = pou_name.starts_with("__");
+        self.a.diags.extend((!hidden).then(|| {
             Diagnostic::new(
                 code::W1410,
                 Severity::Note,
@@ -998,8 +1001,8 @@ impl Body<'_, '_> {
             .with_hint(format!(
                 "CODESYS and TwinCAT allow this; IEC 61131-3 needs `VAR_EXTERNAL{constant} {} : {ty}; END_VAR` in the POU",
                 g.name
-            )),
-        );
+            ))
+        }));
         self.note_name(base.span, NameRef::Var(index));
         Some(Place {
             ty: g.ty,

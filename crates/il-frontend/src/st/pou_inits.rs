@@ -200,9 +200,13 @@ fn run_time_inits(
                     region.start + from..region.start + to,
                 ));
             }
-            let inner_end = value.len() - 1;
-            for (n, &(sep, a, b, rt)) in fields.iter().enumerate() {
+            // (whether a field that stays came before: then a computed field leaves with the
+            // separator before it, else with the one after it, so that two computed fields side
+            // by side never take the same comma)
+            let mut kept_before = false;
+            for &(sep, a, b, rt) in &fields {
                 if !rt {
+                    kept_before = true;
                     continue;
                 }
                 let field = value[a].range.start..value[b].range.end;
@@ -214,13 +218,12 @@ fn run_time_inits(
                     label.to_string(),
                 ));
                 if !all_run_time {
-                    // the field and one comma: its own after it, or (the last) the one before
-                    let (from, to) = if b + 1 < inner_end {
-                        (value[a].range.start, value[b + 1].range.end)
-                    } else if n > 0 {
+                    // the field and one comma: the one before it after a field that stays, else
+                    // its own after it (a field that stays follows)
+                    let (from, to) = if kept_before {
                         (value[sep].range.start, value[b].range.end)
                     } else {
-                        (value[a].range.start, value[b].range.end)
+                        (value[a].range.start, value[b + 1].range.end)
                     };
                     cut.push((
                         region.start + name.start..region.start + name.end,
