@@ -15,7 +15,11 @@
 //! - `SIZEOF(POINTER TO T)`, `SIZEOF(REFERENCE TO T)`: 8, a pointer of ladderc's 64-bit target
 //!   (before: E0100 at `TO`);
 //! - an enumeration's typed literal qualified by its namespace (`Plant.Valve#Open`, SIMATIC AX;
-//!   before: E0100 and a cascading E0104).
+//!   before: E0100 and a cascading E0104);
+//! - computed fields side by side, first or last among constant ones, each leave the declaration
+//!   with their own comma (before: `(x := 6, y := a, z := b)` left `(x := 6, )`, an E0011);
+//! - a global read by a global list's computed initial value is no W1410 note about ladderc's
+//!   hidden `__FBINIT_ALL` program.
 
 mod common;
 use common::{check_text, column, run_text};
