@@ -165,14 +165,9 @@ fn named(name: &str, consts: &Constants) -> Result<Layout, String> {
             "`{name}` is a function block: the size of its instance is known in code (`SIZEOF(x)` in a body), not while declarations are read"
         )),
         _ => {
-            // (the keys are scanned only for a type marked as holding one: a text of 100,000
-            // types declared in terms of each other stays linear)
-            let upper = name.to_ascii_uppercase();
-            let prefix = format!("{HOLDS}{upper} ");
-            let marked = consts.contains_key(&format!("{HOLDS}{upper}"));
-            let held = marked
-                .then(|| consts.keys().filter_map(|k| k.strip_prefix(&prefix)).min())
-                .flatten();
+            // (read by key, never by a scan of every constant: a text of 100,000 types declared
+            // in terms of each other stays linear)
+            let held = held_of(consts, name);
             match held {
                 // a type declared with a field of a type declared nowhere: that type is the cause
                 // (sema's E1003 names it, and then this one is left out: [`held_unknown`])
@@ -188,8 +183,8 @@ fn named(name: &str, consts: &Constants) -> Result<Layout, String> {
 }
 
 /// The key prefix marking a declared type whose size is not known because it holds a type declared
-/// nowhere (`HOLDS ST_LOG T_VendorSeverity`: the type, then the unknown type as written; and
-/// `HOLDS ST_LOG` alone, so that only a marked type's keys are scanned).
+/// nowhere (`HOLDS ST_LOG`: the length of the unknown type's name as written, and `HOLDS ST_LOG #0`,
+/// `#1` ...: its bytes, [`mark_unknown`]).
 const HOLDS: &str = "HOLDS ";
 
 /// The end of the reason [`named`] gives for a type that holds a type whose size is not known.
@@ -210,13 +205,46 @@ pub fn held_unknown(why: &str) -> Option<&str> {
     None
 }
 
-/// Marks `name` as holding the unknown type that `why` names (see [`HOLDS`]).
+/// Marks `name` as holding the unknown type that `why` names (see [`HOLDS`]); of two, the first
+/// in name order (as the messages are the same whatever the order of the text).
 fn mark_unknown(consts: &mut Constants, name: &str, why: &str) {
-    if let Some(held) = held_unknown(why) {
-        let upper = name.to_ascii_uppercase();
-        consts.insert(format!("{HOLDS}{upper} {held}"), ConstNum::Int(0));
-        consts.insert(format!("{HOLDS}{upper}"), ConstNum::Int(0));
+    let Some(held) = held_unknown(why) else {
+        return;
+    };
+    if held_of(consts, name).is_some_and(|h| h.as_str() <= held) {
+        return;
     }
+    let key = format!("{HOLDS}{}", name.to_ascii_uppercase());
+    // the name's bytes, 15 to a number (so that each stays positive), after its length
+    let bytes = held.as_bytes();
+    consts.insert(key.clone(), ConstNum::Int(bytes.len() as i128));
+    for (k, chunk) in bytes.chunks(15).enumerate() {
+        let v = chunk
+            .iter()
+            .rev()
+            .fold(0i128, |acc, &b| (acc << 8) | i128::from(b));
+        consts.insert(format!("{key} #{k}"), ConstNum::Int(v));
+    }
+}
+
+/// The unknown type `name` is marked as holding ([`mark_unknown`]).
+fn held_of(consts: &Constants, name: &str) -> Option<String> {
+    let key = format!("{HOLDS}{}", name.to_ascii_uppercase());
+    let Some(ConstNum::Int(len)) = consts.get(&key) else {
+        return None;
+    };
+    let len = usize::try_from(*len).ok()?;
+    let mut bytes = Vec::with_capacity(len);
+    for k in 0..len.div_ceil(15) {
+        let Some(ConstNum::Int(mut v)) = consts.get(&format!("{key} #{k}")).cloned() else {
+            return None;
+        };
+        for _ in 0..15.min(len - bytes.len()) {
+            bytes.push((v & 0xff) as u8);
+            v >>= 8;
+        }
+    }
+    String::from_utf8(bytes).ok()
 }
 
 /// Whether the E0022 message `message` (`constant expression ...: <reason>`) is about a type that
