@@ -16,10 +16,8 @@
 //!   traced as `CfgA.P1.n` and `CfgB.P1.n`, and the unqualified `--watch P1.n` is a usage error
 //!   listing both (before: two trace columns named `P1.n`, `--watch P1.n` silently the first one,
 //!   `CfgB.P1.n` unknown);
-//! - IL's `CAL cnt(pulse, FALSE, limit, full, value)` listing every parameter of a standard block
-//!   by position (IEC 61131-3 ed. 2 Table 53) is still E1020, but its message no longer claims that
-//!   such a call is allowed (before: "... given by position only in a call that lists all its
-//!   parameters in order", of a call that does); the same call with named outputs runs.
+//! (IL's `CAL cnt(pulse, FALSE, limit, full, value)` listing every parameter of a standard block
+//! by position, IEC 61131-3 ed. 2 Table 53, runs since round 29: `positional_outputs_r29_run.rs`.)
 
 mod common;
 use common::{check_text, column, in_dir, run_text, write_in};
@@ -383,51 +381,5 @@ fn ambiguous_unqualified_watch_is_a_usage_error() {
             && stderr.contains("`CfgA.P1.n`")
             && stderr.contains("`CfgB.P1.n`"),
         "{stderr}"
-    );
-}
-
-/// `CAL cnt(pulse, FALSE, limit, full, value)`: one E1020 at the first output, saying that ladderc
-/// binds positional outputs only in ST calls of user POUs; written with `Q => full, CV => value`
-/// the counter counts the three rising edges of `pulse` and sets `full` at the third.
-#[test]
-fn il_cal_with_every_parameter_by_position_is_one_honest_error() {
-    let positional = "PROGRAM Main
-VAR
-  cnt : CTU;
-  pulse : BOOL;
-  limit : INT := 3;
-  full : BOOL;
-  value : INT;
-END_VAR
-  LD pulse
-  NOT
-  ST pulse
-  CAL cnt(pulse, FALSE, limit, full, value)
-END_PROGRAM
-";
-    let (code, lines) = check_text("cal.il", positional);
-    assert_eq!(code, Some(1), "{lines:?}");
-    let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
-    assert_eq!(errors.len(), 1, "{lines:?}");
-    assert!(
-        errors[0].starts_with("cal.il:12:32: error[E1020]"),
-        "{lines:?}"
-    );
-    assert!(errors[0].contains("not in IL's CAL"), "{lines:?}");
-    let named = positional.replace(
-        "CAL cnt(pulse, FALSE, limit, full, value)",
-        "CAL cnt(CU := pulse, R := FALSE, PV := limit, Q => full, CV => value)",
-    );
-    let (trace, stderr) = run_text("cal.il", &named, 6, "Main.value,Main.full");
-    assert!(!stderr.contains("error["), "{stderr}");
-    assert_eq!(
-        column(&trace, "Main.value"),
-        vec![1.0, 1.0, 2.0, 2.0, 3.0, 3.0],
-        "{trace}"
-    );
-    assert_eq!(
-        column(&trace, "Main.full"),
-        vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0],
-        "{trace}"
     );
 }

@@ -1333,22 +1333,45 @@ impl Body<'_, '_> {
                     .filter(|p| matches!(p.1, ParamDir::Input | ParamDir::InOut))
                     .cloned()
                     .collect();
+                let visible: Vec<_> = params
+                    .iter()
+                    .filter(|p| p.1 != ParamDir::Internal)
+                    .collect();
                 // an output in a positional call of a block (`c(x)` where C has only the output
                 // `o`): named in the message (before round 26: "C has 0 inputs, 1 given" alone)
                 let first_output = params.iter().find(|p| p.1 == ParamDir::Output);
+                if first_output.is_some() && ops.len() == visible.len() {
+                    // every parameter listed in declaration order, the outputs receiving
+                    // (IEC 61131-3 ed. 2 Table 53's `CAL C10(%IX10, FALSE, A, OUT, B)`, ed. 3
+                    // 6.6.1.4.2): bound as the formal call naming each one, an output's
+                    // argument the variable it is written to (`Q => OUT`)
+                    for (k, (o, p)) in ops.iter().zip(visible).enumerate() {
+                        let dir = if p.1 == ParamDir::Output {
+                            ArgDir::Output { negated: false }
+                        } else {
+                            ArgDir::Input
+                        };
+                        let fa = ast::FormalArg {
+                            name: ast::Ident::new(p.0.clone(), o.span()),
+                            dir,
+                            value: o.clone(),
+                            span: o.span(),
+                        };
+                        self.formal_arg(k, &fa, &tname, &params, rec);
+                    }
+                    return;
+                }
                 if let (true, Some(out)) = (ops.len() > inputs.len(), first_output) {
-                    // every parameter listed (IEC 61131-3 ed. 2 Table 53's `CAL C10(%IX10, FALSE,
-                    // A, OUT, B)`): ladderc binds such outputs only in ST calls of user blocks
-                    let why = if ops.len() == params.len() {
-                        "ladderc binds outputs given by position only in an ST call of a user block or function, not in IL's CAL nor for a standard block"
-                    } else {
-                        "an output of a block is given by position only in a call that lists all its parameters in order"
-                    };
                     self.a
                         .error(
                             code::E1020,
                             ops[inputs.len()].span(),
-                            format!("{tname} has {} inputs, {} given: {why}", inputs.len(), ops.len()),
+                            format!(
+                                "{tname} has {} inputs, {} given: an output of a block is given by position only in a call that lists all its parameters in order ({} in all)",
+                                inputs.len(),
+                                ops.len(),
+                                visible.len()
+                            ),
                         )
                         .label("one argument too many")
                         .hint(format!(
