@@ -16,6 +16,7 @@
 //!   traced as `CfgA.P1.n` and `CfgB.P1.n`, and the unqualified `--watch P1.n` is a usage error
 //!   listing both (before: two trace columns named `P1.n`, `--watch P1.n` silently the first one,
 //!   `CfgB.P1.n` unknown);
+//!
 //! (IL's `CAL cnt(pulse, FALSE, limit, full, value)` listing every parameter of a standard block
 //! by position, IEC 61131-3 ed. 2 Table 53, runs since round 29: `positional_outputs_r29_run.rs`.)
 
