@@ -6,7 +6,7 @@
 //! "Conversions"): REAL/LREAL to integers round to nearest with halves to even and saturate, NaN gives
 //! 0; TRUNC truncates toward zero and saturates; integers wrap to the target width; TIME and TOD
 //! convert from and to milliseconds, DT and DATE seconds, edition 3's LDT, LDATE and LTOD
-//! nanoseconds (a number to DATE keeps the day, to TOD the time of day; DT and LDT convert to the
+//! nanoseconds (a number to DATE keeps all its seconds, to TOD the time of day; DT and LDT convert to the
 //! date and the time of day of either length; CODESYS's DATE_TO_DT is the date at midnight,
 //! TOD_TO_TIME the duration since midnight, TIME_TO_TOD the duration's time of day); LREAL to REAL rounds to nearest and overflows to an
 //! infinity.
@@ -266,12 +266,12 @@ fn date_unit(t: &str) -> i128 {
         _ => 1_000_000_000,
     }
 }
-/// A DATE or LDATE keeps the day (floored, wrapping as the run time's LINT arithmetic), a TOD or
-/// LTOD the time of day.
+/// A number converted to TOD or LTOD keeps the time of day; to DATE or LDATE all of it, the part
+/// below a day too (CODESYS and TwinCAT store a DATE as a DWORD of seconds and copy the number;
+/// round 29 of issue #13, before: floored to the day; `values_r29_run.rs`).
 fn within_day(t: &str, ns: i128) -> i128 {
     let day = 86_400_000_000_000i128;
     match kind(t) {
-        "DATE" => wrap(ns - ns.rem_euclid(day), "LINT"),
         "TOD" => ns.rem_euclid(day),
         _ => ns,
     }

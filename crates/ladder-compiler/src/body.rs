@@ -1,11 +1,11 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
 //! [`crate::lower`]; SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST is parsed
-//! and lowered to IL by [`crate::st_body`]; an ST POU that no program instance reaches only gets warning
-//! W3004.
+//! and lowered to IL by [`crate::st_body`]. Every POU is lowered and checked, whether a program
+//! instance reaches it or not, as in ST text (before round 29 of issue #13 an ST POU that no program
+//! instance reached was skipped unchecked with W3004, no longer raised).
 //!
 //! Output: the body's statements and, when the lowering needed hidden variables (edge detectors,
-//! temporaries, chart state), one extra `VAR` (LD/FBD/SFC) or `VAR_TEMP` (ST) block holding them;
-//! `None` for an unused ST POU, which is left out.
+//! temporaries, chart state), one extra `VAR` (LD/FBD/SFC) or `VAR_TEMP` (ST) block holding them.
 //!
 //! Input: the POU's `<body>` element, its declarations (already read into the [`Pou`]) and the project
 //! [`Index`]. Invariants: a missing `<body>` is an empty body; a body language ladderc does not read is
@@ -28,17 +28,16 @@ pub fn lower_pou_body(
     index: &Index,
     pou_el: &Element,
     pou: &Pou,
-    used: bool,
-) -> Option<(Vec<IlStmt>, Vec<VarBlock>)> {
+) -> (Vec<IlStmt>, Vec<VarBlock>) {
     let Some(body) = pou_el.child("body") else {
-        return Some((Vec::new(), Vec::new()));
+        return (Vec::new(), Vec::new());
     };
     let Some(lang) = body
         .children
         .iter()
         .find(|c| !matches!(c.name(), "documentation" | "addData"))
     else {
-        return Some((Vec::new(), Vec::new()));
+        return (Vec::new(), Vec::new());
     };
     let span = ctx.tag(lang);
     let name = &pou.name.name;
@@ -53,10 +52,7 @@ pub fn lower_pou_body(
     // linked for calls through an instance. The actions of an SFC body are its chart's
     // (`crate::sfc`).
     let mut st_actions: Vec<(Ident, &Element)> = Vec::new();
-    let mut acts = LoweredActions::default();
-    if lang.name() != "ST" || used {
-        acts = lower_actions(ctx, index, pou_el, pou, lang.name(), &mut st_actions);
-    }
+    let mut acts = lower_actions(ctx, index, pou_el, pou, lang.name(), &mut st_actions);
     let is_var = var_test(pou, index);
     let mut next = 0;
     let mut inline = |ctx: &mut Ctx, mut stmts: Vec<IlStmt>| {
@@ -79,22 +75,11 @@ pub fn lower_pou_body(
             if !hidden.is_empty() {
                 blocks.push(VarBlock::locals(hidden, span));
             }
-            Some((stmts, blocks))
+            (stmts, blocks)
         }
         "IL" => {
             let stmts = crate::il_body::parse(ctx, lang, pou);
-            Some((inline(ctx, stmts), acts.blocks))
-        }
-        "ST" if !used => {
-            ctx.report(
-                Diagnostic::warning(
-                    code::W3004,
-                    format!("POU `{name}` (ST) is not used by any program instance and is skipped"),
-                )
-                .at(span)
-                .with_xml(xml_ctx),
-            );
-            None
+            (inline(ctx, stmts), acts.blocks)
         }
         "ST" => {
             let il: Vec<(Ident, Vec<IlStmt>)> = acts
@@ -114,7 +99,7 @@ pub fn lower_pou_body(
             }
             let mut blocks = acts.blocks;
             blocks.extend(temps);
-            Some((stmts, blocks))
+            (stmts, blocks)
         }
         "SFC" => {
             let (stmts, mut hidden) = crate::sfc::lower(ctx, index, pou_el, pou, lang);
@@ -132,7 +117,7 @@ pub fn lower_pou_body(
             if !hidden.is_empty() {
                 blocks.push(VarBlock::locals(hidden, span));
             }
-            Some((stmts, blocks))
+            (stmts, blocks)
         }
         other => {
             ctx.report(
@@ -143,7 +128,7 @@ pub fn lower_pou_body(
                 .at(span)
                 .with_xml(xml_ctx),
             );
-            Some((Vec::new(), Vec::new()))
+            (Vec::new(), Vec::new())
         }
     }
 }

@@ -437,13 +437,11 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     if !data_types.is_empty() {
         unit.items.push(LibraryElement::DataTypes(data_types));
     }
-    let used = used_pous(&headers, &configs);
     for (el, mut pou) in headers {
         if let Some(st) = el.child("body").and_then(|b| b.child("ST")) {
             let blocks = crate::st_body::body_declarations(ctx, st, &pou.name.name);
             pou.var_blocks.extend(blocks);
         }
-        let is_used = used.as_ref().is_none_or(|u| u.contains(&pou.name.key()));
         if as_text.contains(&pou.name.key()) {
             // its body and methods are lowered by the ST front end (`ctx.pending`)
             unit.items.push(LibraryElement::Pou(pou));
@@ -452,10 +450,7 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
         let (stmts, hidden) = if not_compiled.contains(&pou.name.key()) {
             (Vec::new(), Vec::new())
         } else {
-            match body::lower_pou_body(ctx, &index, el, &pou, is_used) {
-                Some(b) => b,
-                None => continue,
-            }
+            body::lower_pou_body(ctx, &index, el, &pou)
         };
         pou.body = stmts;
         pou.var_blocks.extend(hidden);
@@ -561,75 +556,6 @@ fn application_configuration(ctx: &mut Ctx, r: &Element) -> Option<Configuration
         resources: vec![res],
         access: Vec::new(),
     })
-}
-
-/// The POUs reachable from the configurations' program instances (upper-cased names), or `None` when
-/// the project instantiates no program (then every POU counts as used). A POU references another by
-/// declaring a variable of its type, by a block of its type, or by naming it in its body text.
-fn used_pous(pous: &[(&Element, Pou)], configs: &[Configuration]) -> Option<HashSet<String>> {
-    let roots: Vec<String> = configs
-        .iter()
-        .flat_map(|c| c.resources.iter())
-        .flat_map(|r| r.programs.iter())
-        .map(|p| p.type_name.key())
-        .collect();
-    if roots.is_empty() {
-        return None;
-    }
-    let names: HashSet<String> = pous.iter().map(|(_, p)| p.name.key()).collect();
-    if names.len() <= 1 {
-        // One POU name: what it references can only be itself or no POU, and the caller asks only
-        // whether a POU is used: that is whether a configuration instantiates it (no body walk).
-        return Some(roots.into_iter().collect());
-    }
-    let mut refs: HashMap<String, Vec<String>> = HashMap::new();
-    for (el, p) in pous {
-        let mut out: Vec<String> = Vec::new();
-        for b in &p.var_blocks {
-            for v in &b.vars {
-                let mut t = &v.ty;
-                while let TypeRef::Array { element, .. } = t {
-                    t = element;
-                }
-                if let TypeRef::Named(n) = t {
-                    out.push(n.key());
-                }
-            }
-        }
-        if let Some(body) = el.child("body") {
-            // One upper-case buffer reused for every word: no allocation per word looked up.
-            let mut key = String::new();
-            for d in body.walk() {
-                if d.name() == "block" {
-                    if let Some(t) = d.attr("typeName") {
-                        out.push(t.trim().to_ascii_uppercase());
-                    }
-                }
-                for seg in d.segments() {
-                    for word in seg
-                        .text
-                        .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
-                    {
-                        key.clear();
-                        key.push_str(word);
-                        key.make_ascii_uppercase();
-                        if names.contains(&key) {
-                            out.push(key.clone());
-                        }
-                    }
-                }
-            }
-        }
-        refs.insert(p.name.key(), out);
-    }
-    let mut used: HashSet<String> = HashSet::new();
-    let mut todo = roots;
-    while let Some(n) = todo.pop() {
-        if used.insert(n.clone()) {
-            todo.extend(refs.get(&n).into_iter().flatten().cloned());
-        }
-    }
-    Some(used)
 }
 
 /// Whether `ns` is a PLCopen TC6 namespace (tc6_0201, tc6_0200, tc6.xsd v1.0).

@@ -10,7 +10,10 @@
 //! so that indexing may reach the other elements). Pointer arithmetic (`p + n`, bytes) and indexing
 //! (`p[i]`, the i-th element after `p^`) only move the offset; the C pointer is formed only by the
 //! runtime's `ladderc_deref`, after checking that the `sizeof` bytes of the access lie inside the
-//! variable and are aligned for their type. A NULL reference, or one moved outside its variable,
+//! variable and are aligned for their type. The access is what is read or written: with the
+//! array indexes and structure fields that follow a dereference (`p^[i].x`) it is that element or
+//! field, not the whole target, so a pointer to a larger array than the variable reaches each
+//! element the variable has. A NULL reference, or one moved outside its variable,
 //! reads zero and a write through it is dropped (both into a zeroed scratch object of the target
 //! type, `ladderc_null_<n>`), and the run-time error flag `LADDERC_ERR_NULL_REF` or
 //! `LADDERC_ERR_POINTER` is set with the place of the first one: no byte outside a variable is ever
@@ -202,6 +205,14 @@ impl Gen<'_> {
     /// `lv^`: the variable the reference `lv` (of type `ty`) refers to; with `index`, `lv[i]`, the
     /// i-th element of the reference's target type after `lv^` (TwinCAT `p[i]` on a `POINTER TO
     /// T`). `v` and `at` name the place for the run-time message (`r^` in POU `main`).
+    ///
+    /// The array indexes and structure fields that follow in `v` (`p^[i]`, `p^[i].x`, `p^.rows[j]`)
+    /// are taken into the access (see [`Self::inside_target`]): only the bytes of the element or
+    /// field reached must lie inside the variable the reference was made from, not the whole
+    /// target. So a `POINTER TO ARRAY[0..65535] OF T` given `ADR` of a shorter array reads and
+    /// writes each element that array has (CODESYS's usual way to pass an array of any length,
+    /// CODESYS online help "Pointer"); an element past its end is the run-time pointer error.
+    /// Returns the place and how many of the following accessors it took.
     #[allow(clippy::too_many_arguments)]
     pub(super) fn deref_place(
         &mut self,
@@ -212,7 +223,7 @@ impl Gen<'_> {
         at: usize,
         span: Span,
         index: Option<&Operand>,
-    ) -> Option<Place> {
+    ) -> Option<(Place, usize)> {
         let Type::Ref(target) = ty else {
             self.unsupported(span, "`^` on a value that is not a reference");
             return None;
@@ -220,8 +231,16 @@ impl Gen<'_> {
         let target = (**target).clone();
         let base = ctypes::base(self.model, &target)?;
         let dims = ctypes::dims(&target);
-        let (scratch, align) = self.null_scratch(&base, &dims);
-        let path = self.written(v, at);
+        let (scratch, _) = self.null_scratch(&base, &dims);
+        let rest = v.accessors.get(at + 1..).unwrap_or_default();
+        let index_site = if rest.iter().any(|a| matches!(a, Accessor::Index(_))) {
+            self.site(scope, &il_frontend::print::var_ref_text(v), v.span)
+        } else {
+            String::new()
+        };
+        let inside = self.inside_target(scope, &scratch, &target, rest, span, &index_site)?;
+        let taken = inside.as_ref().map_or(0, |(_, _, n)| *n);
+        let path = self.written(v, at + taken);
         // the hidden, always NULL reference a call through an unassigned interface variable reads
         // (il_frontend::st::interface_vars): named by the variable, not by the hidden field
         let unassigned = cfmt!(".{}^", il_frontend::st::interface_vars::UNASSIGNED);
@@ -238,19 +257,76 @@ impl Gen<'_> {
             },
         };
         let site = self.site(scope, &what, v.span);
-        let r = match index {
+        let mut r = match index {
             None => lv.to_string(),
             Some(i) => {
                 let i = self.value(scope, i, &Type::Elementary(Elementary::Lint))?;
                 cfmt!("ladderc_ref_index({lv}, (int64_t)({i}), sizeof {scratch})")
             }
         };
-        Some(Place::Mem {
+        let (reached, offset) = match inside {
+            Some((ty, offset, _)) => (ty, Some(offset)),
+            None => (target, None),
+        };
+        if let Some(offset) = offset {
+            r = cfmt!("ladderc_ref_add({r}, (int64_t)({offset}))");
+        }
+        let base = ctypes::base(self.model, &reached)?;
+        let dims = ctypes::dims(&reached);
+        let (scratch, align) = self.null_scratch(&base, &dims);
+        let place = Place::Mem {
             lv: cfmt!(
                 "(*({base} (*){dims})ladderc_deref({r}, sizeof {scratch}, offsetof({align}, t), &{scratch}, {site}))"
             ),
-            ty: target,
-        })
+            ty: reached,
+        };
+        Some((place, taken))
+    }
+
+    /// The array indexes and structure fields at the start of `rest` that lead from a
+    /// reference's target (of type `target`) into one of its elements or fields, measured on the
+    /// target type's scratch object `scratch` (so nothing is accessed): the type reached, the C
+    /// expression of its byte offset in the target, and how many accessors were taken. `None`
+    /// when `rest` starts with none (a further dereference, a pointer's `p[i]`, a string's
+    /// character, a partial access `.3`, or a member of a function block instance are left to
+    /// the caller). Each index is checked against its declared bounds as for any array
+    /// (`ladderc_index`, `site`), so the offset stays inside the target type.
+    fn inside_target(
+        &mut self,
+        scope: &Scope,
+        scratch: &str,
+        target: &Type,
+        rest: &[Accessor],
+        span: Span,
+        site: &str,
+    ) -> Option<Option<(Type, String, usize)>> {
+        let mut lv = scratch.to_string();
+        let mut ty = target.clone();
+        let mut taken = 0;
+        for acc in rest {
+            let next = match (acc, &ty) {
+                (Accessor::Index(ix), Type::Array { .. }) => {
+                    self.index(scope, &lv, &ty, ix, span, site)?
+                }
+                (Accessor::Field(f), Type::Struct(_))
+                    if il_frontend::ast::partial_access(&f.name).is_none() =>
+                {
+                    self.field(&lv, &ty, f)?
+                }
+                _ => break,
+            };
+            let Place::Mem { lv: l, ty: t } = next else {
+                break;
+            };
+            lv = l;
+            ty = t;
+            taken += 1;
+        }
+        if taken == 0 {
+            return Some(None);
+        }
+        let offset = cfmt!("(const unsigned char *)&({lv}) - (const unsigned char *)&{scratch}");
+        Some(Some((ty, offset, taken)))
     }
 
     /// The name of the zeroed scratch object of C type `base dims` that a NULL dereference reads

@@ -428,7 +428,12 @@ impl Gen<'_> {
             return None;
         };
         let mut place = base?;
+        // accessors already taken by a dereference that reached into its target (`p^[i].x`)
+        let mut taken = skip;
         for (at, acc) in r.accessors.iter().enumerate().skip(skip) {
+            if at < taken {
+                continue;
+            }
             if let Accessor::Field(f) = acc {
                 if let Some((size, index)) = il_frontend::ast::partial_access(&f.name) {
                     // `x.3`, `x.%B1`: sema checked the type and the range
@@ -488,7 +493,10 @@ impl Gen<'_> {
                 Accessor::Field(f) => self.field(&lv, &ty, f)?,
                 // `p[i]` on a `POINTER TO T` (sema: one index): the i-th T after `p^`
                 Accessor::Index(idx) if matches!(ty, Type::Ref(_)) && idx.len() == 1 => {
-                    self.deref_place(scope, &lv, &ty, r, at, r.span, idx.first())?
+                    let (p, inside) =
+                        self.deref_place(scope, &lv, &ty, r, at, r.span, idx.first())?;
+                    taken = at + 1 + inside;
+                    p
                 }
                 // edition 3: `s[i]`, the i-th character (1-based) of a STRING or a WSTRING; out
                 // of 1..LEN(s) a NUL read and a write dropped (`ladderc_char_at`)
@@ -527,7 +535,11 @@ impl Gen<'_> {
                     let site = self.index_site(scope, r, at);
                     self.index(scope, &lv, &ty, idx, r.span, &site)?
                 }
-                Accessor::Deref(span) => self.deref_place(scope, &lv, &ty, r, at, *span, None)?,
+                Accessor::Deref(span) => {
+                    let (p, inside) = self.deref_place(scope, &lv, &ty, r, at, *span, None)?;
+                    taken = at + 1 + inside;
+                    p
+                }
             };
         }
         Some(place)

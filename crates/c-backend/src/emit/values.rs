@@ -120,7 +120,8 @@ fn conversion(from: &Type, to: &Type) -> Option<(Elementary, Elementary)> {
 
 /// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest (halves
 /// to even) and saturates, LREAL to REAL overflows to an infinity, TIME, LTIME and TOD to/from numbers
-/// count milliseconds, DT and DATE seconds since 1970-01-01, anything to BOOL is `<> 0`.
+/// count milliseconds, DT and DATE seconds since 1970-01-01 (a number to DATE keeps the seconds
+/// below a day, see [`within_day`]), anything to BOOL is `<> 0`.
 pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     if f == t {
         return x.to_string();
@@ -184,11 +185,17 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     int_to_int(x, t)
 }
 
-/// A number converted to DATE keeps the day (the time of day dropped: `DWORD_TO_DATE(86401)` is
-/// D#1970-01-02), to TOD the time of day, as a DATE or TOD variable holds nothing else.
+/// A number converted to TOD (LTOD) keeps the time of day (modulo one day), as a TOD variable
+/// holds nothing else. A number converted to DATE (LDATE) keeps all of its seconds (nanoseconds),
+/// the part below a whole day too: CODESYS and TwinCAT store a DATE as a DWORD of seconds since
+/// 1970-01-01 and their `<number>_TO_DATE` copies the number into it (Beckhoff infosys, "DATE/DT_TO_<type>":
+/// "TwinCAT saves the date internally in a DWORD in seconds since 1 January 1970"; CODESYS online
+/// help, date and time conversion operators: DATE and DT use the same memory format, a DWORD),
+/// so `UINT_TO_DATE(35) > UINT_TO_DATE(0)` and `DATE_TO_UDINT(UDINT_TO_DATE(115))` is 115
+/// (IEC 61131-3 leaves these conversions to the implementation). A date's time line conversions
+/// (`DT_TO_DATE`, `TIME_TO_DATE`) keep only the day ([`convert_elementary`]).
 fn within_day(ns: &str, t: Elementary) -> String {
     match t.date_kind() {
-        Some(E::Date) => cfmt!("ladderc_dt_to_date({ns})"),
         Some(E::Tod) => cfmt!("ladderc_dt_to_tod({ns})"),
         _ => ns.to_string(),
     }
