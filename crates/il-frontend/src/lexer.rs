@@ -316,7 +316,7 @@ fn closed_on_a_later_line(rest: &str, quote: u8) -> Option<usize> {
 }
 
 /// A direct address `%IX0.1`, `%QW3`, `%MD10`, `%i0.0`, `%I*` (the whole token's text).
-pub(crate) fn direct_address(text: &str) -> Result<(Area, AddressSize, Vec<u32>), LexError> {
+pub fn direct_address(text: &str) -> Result<(Area, AddressSize, Vec<u32>), LexError> {
     let bad = |why: &str| LexError::BadAddress(format!("`{text}` {why}"));
     let mut chars = text[1..].chars().peekable();
     let area = match chars.next().map(|c| c.to_ascii_uppercase()) {
@@ -335,6 +335,12 @@ pub(crate) fn direct_address(text: &str) -> Result<(Area, AddressSize, Vec<u32>)
     };
     if size.is_some() {
         chars.next();
+    } else if let Some(&c) = chars.peek().filter(|c| c.is_ascii_alphabetic()) {
+        // `%IR3.0` (an OWEN/CODESYS V2.3 target's REAL area): the location is fine, the size
+        // letter is not one of IEC 61131-3's (ed. 3, 6.5.5, Table 16: X, B, W, D, L)
+        return Err(bad(&format!(
+            "has the size letter `{c}`, which is not one of X, B, W, D, L (IEC 61131-3 sizes: bit, byte, word, double word, long word)"
+        )));
     }
     let size = size.unwrap_or(AddressSize::Bit);
     let rest: String = chars.collect();

@@ -750,6 +750,54 @@ fn nothing_to_run(lowered: &pipeline::Lowered) -> Option<Diagnostic> {
     )
 }
 
+/// W1457, once per task with programs: its INTERVAL is longer than the scan cycle, so its
+/// programs run only in the cycles in which the interval has elapsed (one of every k), and leave
+/// their variables unchanged in the others; `run` would otherwise say nothing of it.
+fn slower_tasks(lowered: &pipeline::Lowered) -> Vec<Diagnostic> {
+    let Some(model) = lowered.model.as_ref() else {
+        return Vec::new();
+    };
+    let cycle_ns = lowered.cycle_ms * 1e6;
+    let mut out = Vec::new();
+    for r in model.configurations.iter().flat_map(|c| c.resources.iter()) {
+        for (k, t) in r.tasks.iter().enumerate() {
+            let Some(iv) = t.interval_ns.filter(|_| t.single.is_none()) else {
+                continue;
+            };
+            let ratio = iv as f64 / cycle_ns;
+            if ratio <= 1.0 + 1e-9 || !r.programs.iter().any(|p| p.task == Some(k)) {
+                continue;
+            }
+            let every = if (ratio - ratio.round()).abs() < 1e-9 {
+                format!("one cycle of every {}", ratio.round())
+            } else {
+                format!("about one cycle of every {ratio:.2}")
+            };
+            let interval_ms = iv as f64 / 1e6;
+            let ms = |v: f64| format!("{}", (v * 1e6).round() / 1e6);
+            out.push(
+                Diagnostic::new(
+                    diagnostics::code::W1457,
+                    diagnostics::Severity::Note,
+                    format!(
+                        "task `{}` has INTERVAL {} ms, longer than the scan cycle of {} ms: its programs run in {every}, and keep their values in the others",
+                        t.name,
+                        ms(interval_ms),
+                        ms(lowered.cycle_ms)
+                    ),
+                )
+                .at(t.span)
+                .with_primary_label("runs when its interval has elapsed")
+                .with_hint(format!(
+                    "pass --cycle-ms {} to scan at the task's interval (`ladderc explain W1457`)",
+                    ms(interval_ms)
+                )),
+            );
+        }
+    }
+    out
+}
+
 fn run_program(
     c: &CompileArgs,
     cycle_ms: Option<f64>,
@@ -778,6 +826,7 @@ fn run_program(
     let mut extra = Vec::new();
     let pmac = pmac_text(c, &mut g, &mut extra);
     extra.extend(nothing_to_run(g.lowered()));
+    extra.extend(slower_tasks(g.lowered()));
     let code = finish(g.sources(), g.diagnostics(), extra, format);
     let (lowered, program) = (g.lowered(), g.program());
     if let Err(code) = write_pmac(c, pmac, code, format) {

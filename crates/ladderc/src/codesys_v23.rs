@@ -1,7 +1,8 @@
 //! CODESYS V2.3's text exports (`.EXP`, "Project > Export"): the sections that hold no code
 //! (visualisations, the PLC and alarm configurations, the workspace, library references) blanked
-//! with one note W1442 each, and the task configuration (`RESOURCE` ... `END_RESOURCE`) read as
-//! the project's tasks (W1443 for a task without INTERVAL). The rest of the file (POUs, types,
+//! with one note W1442 each, the task configuration (`RESOURCE` ... `END_RESOURCE`) read as
+//! the project's tasks (W1443 for a task without INTERVAL), and the symbolic names of the PLC
+//! configuration read as global variables at their addresses ([`crate::codesys_v23_io`]). The rest of the file (POUs, types,
 //! variable lists) keeps its place, so every diagnostic keeps the file's own line and column.
 
 use diagnostics::{code, Diagnostic, FileId, Severity, Span};
@@ -15,6 +16,9 @@ pub struct Export {
     pub notes: Vec<Diagnostic>,
     /// The tasks of the task configuration.
     pub tasks: Vec<TcTask>,
+    /// The global variables the PLC configuration's symbolic names declare (its channels and
+    /// bits), located at the names in the section.
+    pub io_globals: Option<il_frontend::ast::VarBlock>,
 }
 
 /// The sections' first words, their last words and what they are.
@@ -63,6 +67,7 @@ pub fn read(file: FileId, text: &str) -> Option<Export> {
         text: String::new(),
         notes: Vec::new(),
         tasks: Vec::new(),
+        io_globals: None,
     };
     let mut blanked: Vec<std::ops::Range<usize>> = Vec::new();
     let mut k = 0;
@@ -147,6 +152,18 @@ pub fn read(file: FileId, text: &str) -> Option<Export> {
                 }
                 None => what.to_string(),
             };
+            if w == "PLC_CONFIGURATION" {
+                let section = &ls[k..j.min(ls.len())];
+                let names = crate::codesys_v23_io::symbolic_names(file, section, &mut out.notes);
+                if let Some(block) = names {
+                    out.notes
+                        .push(io_read(file, start, line.trim(), block.vars.len()));
+                    out.io_globals = Some(block);
+                    blanked.push(start..stop);
+                    k = j + 1;
+                    continue;
+                }
+            }
             out.notes.push(skipped(file, start, line.trim(), &shown));
         }
         blanked.push(start..stop);
@@ -201,6 +218,21 @@ fn skipped(file: FileId, start: usize, line: &str, what: &str) -> Diagnostic {
     .at(Span::new(file, start, start + first.len()))
     .with_primary_label("skipped up to its end")
     .with_hint("nothing to fix (`ladderc explain W1442`); give only the code objects' files to silence this note")
+}
+
+/// W1442 for a PLC configuration whose symbolic names were read: `n` global variables.
+fn io_read(file: FileId, start: usize, line: &str, n: usize) -> Diagnostic {
+    let first = line.split_whitespace().next().unwrap_or(line);
+    Diagnostic::new(
+        code::W1442,
+        Severity::Note,
+        format!(
+            "the PLC configuration exported by CODESYS V2.3: its {n} symbolic name(s) declared as global variables at their addresses, the rest (modules, parameters) skipped"
+        ),
+    )
+    .at(Span::new(file, start, start + first.len()))
+    .with_primary_label("symbolic names read up to its end")
+    .with_hint("nothing to fix (`ladderc explain W1442`): a channel's type follows from its address (%IX BOOL, %IB BYTE, %IW WORD, %ID DWORD)")
 }
 
 /// The tasks of a task configuration's lines (`RESOURCE` up to `END_RESOURCE`): `TASK name

@@ -66,6 +66,7 @@ pub mod br_edges;
 pub mod br_programs;
 pub mod cli;
 pub mod codesys_v23;
+pub mod codesys_v23_io;
 pub mod depfile;
 pub mod encoding;
 pub mod fuzzing;

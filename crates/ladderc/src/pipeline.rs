@@ -524,6 +524,14 @@ impl Session {
                 Some(export) => {
                     self.diags.extend(export.notes);
                     twincat_tasks.extend(export.tasks.into_iter().map(|t| (file, t)));
+                    // the PLC configuration's symbolic names: global variables at their
+                    // addresses, a unit of their own (the file's code, if any, follows)
+                    if let Some(block) = export.io_globals {
+                        units.push(CompilationUnit {
+                            items: vec![il_frontend::ast::LibraryElement::GlobalVars(block)],
+                            ..CompilationUnit::default()
+                        });
+                    }
                     if crate::codesys_v23::no_code(&export.text) {
                         continue;
                     }

@@ -1,5 +1,6 @@
 //! Bit strings counted as unsigned integers (CODESYS, TwinCAT): `n := coeffsCount - 1` of a BYTE,
-//! `FOR i := 1 TO 5 DO` of a BYTE `i`, `PolyEval(p, degree, x)` passing a BYTE to an INT input.
+//! `FOR i := 1 TO 5 DO` of a BYTE `i`, `PolyEval(p, degree, x)` passing a BYTE to an INT input,
+//! `udint = word` (a comparison with a number; between bit strings they stay bit strings).
 //!
 //! IEC 61131-3 (ed. 3, 6.4.2 and Table 22) gives bit strings (BYTE, WORD, DWORD, LWORD) no arithmetic
 //! and requires ANY_INT for a FOR control variable; CODESYS and TwinCAT count them as the unsigned
@@ -34,6 +35,12 @@ pub(super) fn counted_as(e: Elementary) -> Option<Elementary> {
 /// Whether a generic input of class `c` is arithmetic (a bit string in it counts as unsigned).
 pub(super) fn is_arithmetic(c: Class) -> bool {
     matches!(c, Class::AnyNum | Class::AnyInt)
+}
+
+/// Whether `f` is a comparison (GT GE EQ NE LE LT): beside a number, a bit string compares as
+/// its unsigned integer (`udint = word` as UDINT), as it counts in arithmetic and is stored.
+pub(super) fn is_comparison(f: &str) -> bool {
+    matches!(f, "GT" | "GE" | "EQ" | "NE" | "LE" | "LT")
 }
 
 /// Whether a value of `from` may be stored into `to` when bit strings count as unsigned integers:

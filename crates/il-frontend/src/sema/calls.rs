@@ -60,6 +60,14 @@ impl Body<'_, '_> {
         let mut lit_args: Vec<(usize, Span)> = Vec::new();
         let mut error = false;
         let mut class = Class::Any;
+        // a comparison of a bit string with a number (`udint = word`): the bit string counts as
+        // its unsigned integer, as in arithmetic and in a store (W1436); between bit strings only
+        // (`w1 = w2`, `d = w`) it stays a bit string
+        let compares_number = super::bit_arith::is_comparison(f.name)
+            && args.iter().any(|(ty, _)| match self.norm(ty) {
+                Ty::Known(t) => t.is_numeric(),
+                Ty::Lit(_) => false,
+            });
         for (i, (ty, span)) in args.iter().enumerate() {
             match f.param_ty(i) {
                 Some(ParamTy::T(c)) => {
@@ -69,7 +77,7 @@ impl Body<'_, '_> {
                         // CODESYS, TwinCAT: a bit string in arithmetic counts as its unsigned
                         // integer (W1436)
                         Ty::Known(Type::Elementary(e))
-                            if super::bit_arith::is_arithmetic(c)
+                            if (super::bit_arith::is_arithmetic(c) || compares_number)
                                 && super::bit_arith::counted_as(e).is_some() =>
                         {
                             let u = super::bit_arith::counted_as(e).unwrap_or(e);
@@ -277,10 +285,16 @@ impl Body<'_, '_> {
                         .cloned()
                         .unwrap_or_else(|| known[known.len() - 1].clone());
                     let (an, bn) = (self.a.type_name(&a), self.a.type_name(&b));
-                    let (first, second) = if sa == at {
-                        ("the current result", "the operand")
+                    // an operator's operands: IL's current result (`LD u` / `EQ w`) is the
+                    // left operand of ST's `u = w`, the words of both languages
+                    let (first, second, first_label) = if sa == at {
+                        (
+                            "the left one",
+                            "the right operand",
+                            "the left operand (IL: the current result)",
+                        )
                     } else {
-                        ("the first input", "this input")
+                        ("the first input", "this input", "the first input")
                     };
                     self.a
                         .error(
@@ -292,7 +306,7 @@ impl Body<'_, '_> {
                             ),
                         )
                         .label(format!("this is {bn}"))
-                        .also(sa, format!("{first} is {an}"))
+                        .also(sa, format!("{first_label} is {an}"))
                         .hint(match holding_both(&a, &b) {
                             // `i < u` of an INT and a UDINT: UDINT_TO_INT would change the outcome
                             // of a large u, INT_TO_UDINT that of a negative i

@@ -277,9 +277,13 @@ impl Analyzer<'_> {
         let mut configs = Vec::new();
         // (configuration, resource, the variable's name span, its held initial value)
         let mut deferred_config: Vec<(usize, Option<usize>, Span, ast::Initializer)> = Vec::new();
+        // the configurations' names so far: IEC 61131-3 (ed. 3, 6.1.2, 6.8.1) names each
+        // configuration of a project, and a name is unique in its scope
+        let mut config_names: HashMap<String, Span> = HashMap::new();
         for unit in units {
             for item in &unit.items {
                 if let LibraryElement::Configuration(c) = item {
+                    self.unique_configuration_name(&c.name, &mut config_names);
                     let config = self.model.configurations.len();
                     // a global instance of a block or class initialized by its variables
                     // (`c1 : C := (z := 1)`) is read once the blocks' variables are declared
@@ -506,6 +510,23 @@ impl Analyzer<'_> {
                 }
             }
         }
+    }
+
+    /// Registers a configuration's name; reports a second configuration of that name (E1002):
+    /// its instances' variables would be traced and watched under the first one's names.
+    fn unique_configuration_name(&mut self, name: &ast::Ident, first: &mut HashMap<String, Span>) {
+        if let Some(&prev) = first.get(&name.key()) {
+            self.error(
+                code::E1002,
+                name.span,
+                format!("configuration `{}` is declared twice", name.name),
+            )
+            .label("declared again here")
+            .also(prev, "first declared here")
+            .hint("each CONFIGURATION of a project needs its own name: rename one (its program instances are then `Name.inst`), or give the files of one project only");
+            return;
+        }
+        first.insert(name.key(), name.span);
     }
 
     /// Registers a POU or type name; reports a duplicate (returns false).
