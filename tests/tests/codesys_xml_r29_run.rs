@@ -9,7 +9,8 @@
 //! - a VAR_IN_OUT `ARRAY[*] OF T`, which the export writes as an input `<pointer>` with the vendor
 //!   attributes `variable_length_array` and `variable_length_array_original_scope="Inout"`, is the
 //!   variable-length array it was declared as: `LOWER_BOUND`, `UPPER_BOUND` and indexing give the
-//!   caller's array (before: two E1070 "`LOWER_BOUND` takes a declared array").
+//!   caller's array, in a function and in a function block's METHOD (before: two E1070
+//!   "`LOWER_BOUND` takes a declared array").
 //! - a METHOD (and a PROPERTY) of a PROGRAM in the program's vendor data is compiled, called inside
 //!   it and as `PRG.M(x)` from another program (before: E0303 "methods are compiled for function
 //!   blocks only").
@@ -220,6 +221,61 @@ fn a_codesys_variable_length_in_out_is_the_callers_array() {
     assert_eq!(column(&trace, "PLC_PRG.fa"), vec![1.0; 3]);
     assert_eq!(column(&trace, "PLC_PRG.sb"), vec![10.0, 11.0, 12.0]);
     assert_eq!(column(&trace, "PLC_PRG.fb"), vec![5.0; 3]);
+}
+
+/// The same encoding in a METHOD of a function block (its `<interface>` in the block's vendor
+/// data): `st.Sum(a)` over `a : ARRAY[0..2]` = [4, 5, 6] sums 15, and the method's
+/// `Values[UPPER_BOUND(Values, 1)]` is a[2] = 6. Without the method's split, E1072 "a
+/// variable-length array is allowed only as a VAR_IN_OUT".
+#[test]
+fn a_codesys_variable_length_in_out_of_a_method_is_the_callers_array() {
+    let pous = r#"
+      <pou name="FB_Stats" pouType="functionBlock">
+        <interface><outputVars><variable name="last"><type><INT /></type></variable></outputVars></interface>
+        <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml"></xhtml></ST></body>
+        <addData>
+          <data name="http://www.3s-software.com/plcopenxml/method" handleUnknown="implementation">
+            <Method name="Sum" ObjectId="00000000-0000-0000-0000-000000000001">
+              <interface>
+                <returnType><INT /></returnType>
+                <inputVars>
+                  <variable name="Values">
+                    <type><pointer><baseType><INT /></baseType></pointer></type>
+                    <addData>
+                      <data name="http://www.3s-software.com/plcopenxml/attributes" handleUnknown="implementation">
+                        <Attributes>
+                          <Attribute Name="variable_length_array_original_scope" Value="Inout" />
+                          <Attribute Name="variable_length_array" Value="ARRAY[*] OF INT" />
+                          <Attribute Name="Dimensions" Value="1" />
+                        </Attributes>
+                      </data>
+                    </addData>
+                  </variable>
+                </inputVars>
+                <localVars><variable name="i"><type><DINT /></type></variable></localVars>
+              </interface>
+              <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">Sum := 0;
+FOR i := LOWER_BOUND(Values, 1) TO UPPER_BOUND(Values, 1) DO Sum := Sum + Values[i]; END_FOR;
+last := Values[UPPER_BOUND(Values, 1)];</xhtml></ST></body>
+              <addData />
+            </Method>
+          </data>
+        </addData>
+      </pou>
+      <pou name="PLC_PRG" pouType="program">
+        <interface><localVars>
+          <variable name="st"><type><derived name="FB_Stats" /></type></variable>
+          <variable name="a"><type><array><dimension lower="0" upper="2" /><baseType><INT /></baseType></array></type>
+            <initialValue><arrayValue><value><simpleValue value="4" /></value><value><simpleValue value="5" /></value><value><simpleValue value="6" /></value></arrayValue></initialValue></variable>
+          <variable name="s"><type><INT /></type></variable>
+          <variable name="l"><type><INT /></type></variable>
+        </localVars></interface>
+        <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">s := st.Sum(a); l := st.last;</xhtml></ST></body>
+      </pou>"#;
+    let src = codesys_export("", pous, MAIN_TASK);
+    let (trace, _) = run_text("vla_method.xml", &src, 2, "PLC_PRG.s,PLC_PRG.l");
+    assert_eq!(column(&trace, "PLC_PRG.s"), vec![15.0; 2]);
+    assert_eq!(column(&trace, "PLC_PRG.l"), vec![6.0; 2]);
 }
 
 /// A METHOD and a PROPERTY of a PROGRAM in CODESYS's vendor data (CODESYS help, object "Method":

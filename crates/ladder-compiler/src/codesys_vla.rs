@@ -11,7 +11,8 @@
 //! Input: a `<variable>` element and the type its `<type>` gives; an input list read as a block.
 //! Output: the parameter as it was declared, `ARRAY[*, ...] OF T` ([`ArrayDim::VARIABLE`] bounds),
 //! and the input block split so that it is a VAR_IN_OUT block in the same place among the parameters
-//! (positional calls keep their order). [`crate::project`] then splits it into its hidden address
+//! (positional calls keep their order), in a POU's interface and in a METHOD's of the vendor data.
+//! [`crate::project`] then splits it into its hidden address
 //! and bound inputs as the ST front end does in text (`il_frontend::st::varlen`), and the ST bodies'
 //! calls and uses (`LOWER_BOUND`, `UPPER_BOUND`, indexing with the caller's bounds) are rewritten
 //! when they are lowered.

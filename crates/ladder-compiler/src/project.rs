@@ -1068,6 +1068,8 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
             }
             if let Some(iface) = m.child("interface") {
                 read_member_interface(ctx, p, iface, &mut ret, &mut blocks);
+                // a variable-length in-out (`codesys_vla`), split as the block's are
+                il_frontend::st::varlen::split_blocks(&mut blocks);
             }
             let ident = Ident::new(name, ctx.attr_span(m, "name"));
             let st = st.expect("checked above");
