@@ -74,6 +74,13 @@ fn type_element(ctx: &mut Ctx, t: &Element) -> Option<TypeRef> {
             span,
         }),
         "derived" => match t.attr("name") {
+            // CODESYS's one-bit type `BIT` (CODESYS online help, "Data Type: BIT": only for the
+            // members of a structure or function block), which its export writes as
+            // `<derived name="BIT"/>`: read as BOOL, as the ST front end reads it in text
+            // (`il_frontend::parser`'s `named_type`)
+            Some(n) if n.trim().eq_ignore_ascii_case("BIT") => {
+                Some(TypeRef::Named(Ident::new("BOOL", ctx.attr_span(t, "name"))))
+            }
             Some(n) if values::is_ident(n.trim()) => Some(TypeRef::Named(Ident::new(
                 n.trim(),
                 ctx.attr_span(t, "name"),
@@ -469,6 +476,8 @@ pub fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
         return None;
     };
     let ty = type_ref(ctx, ty_el)?;
+    // CODESYS exports a VAR_IN_OUT `ARRAY[*] OF T` as a pointer with vendor attributes
+    let ty = crate::codesys_vla::declared_type(v, &ty).unwrap_or(ty);
     let location = match address {
         Some((a, (astart, aend))) => {
             let aspan = ctx.span(astart, aend);

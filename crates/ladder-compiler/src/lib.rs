@@ -15,6 +15,7 @@ pub mod beremiz;
 pub mod body;
 pub mod catalogue;
 pub mod codesys_v2;
+pub(crate) mod codesys_vla;
 pub mod context;
 pub mod decls;
 pub mod graph;
@@ -32,6 +33,7 @@ pub(crate) mod twincat_sfc;
 pub mod values;
 pub mod var_config;
 pub mod xml;
+mod xml_attrs;
 pub(crate) mod xml_oop;
 
 pub use il_frontend::ast;
@@ -69,6 +71,7 @@ pub fn compile_xml_with_var_config(
     let arena = xml::Arena::new();
     let (root, err) = xml::parse(xml, &arena);
     let mut ctx = context::Ctx::new(file, xml, diags);
+    let malformed = err.is_some();
     if let Some(e) = err {
         let span = ctx.span(e.pos, e.pos);
         ctx.report(
@@ -96,6 +99,8 @@ pub fn compile_xml_with_var_config(
                 std::mem::take(&mut ctx.pending),
             )
         }
+        // the document stopped before its first element: E3001 said why (one error)
+        None if malformed => (ast::CompilationUnit::default(), Vec::new(), Vec::new()),
         None => {
             let span = ctx.span(0, 0);
             ctx.error(

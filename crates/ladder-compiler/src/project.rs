@@ -295,6 +295,12 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
     for p in &pou_els {
         let header = pou_header(ctx, p).map(|mut h| {
             enum_namer.pou(&mut h);
+            // a variable-length in-out (`codesys_vla`) as its hidden address and bound inputs,
+            // as the ST front end splits it in text (`il_frontend::st::varlen`): the calls and
+            // the body's uses are rewritten when the ST bodies are lowered
+            if matches!(h.kind, PouKind::Function | PouKind::FunctionBlock) {
+                il_frontend::st::varlen::split_blocks(&mut h.var_blocks);
+            }
             h
         });
         let mut ms = match &header {
@@ -639,6 +645,8 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
                     if d.child("textDeclaration").is_some() {
                         // an interface's declarations as text (`text_declaration`)
                     } else if member_interface && name.ends_with("/accessmodifiers") {
+                    } else if crate::codesys_vla::only_its_attributes(d) {
+                        // a variable-length in-out's declaration (`codesys_vla`)
                     } else if is_read_vendor_data(name) {
                         stack.push((d, c.name()));
                     } else {
@@ -751,7 +759,10 @@ pub(crate) fn read_interface(
         if list.name() == "returnType" {
             *return_type = decls::type_ref(ctx, list);
         } else if let Some(k) = decls::var_kind(list.name()) {
-            var_blocks.push(decls::var_block(ctx, list, k));
+            // (CODESYS's variable-length in-outs are exported among the inputs)
+            var_blocks.extend(crate::codesys_vla::split_inputs(decls::var_block(
+                ctx, list, k,
+            )));
         } else if list.name() == "accessVars" {
             ctx.error(
                 code::E3012,
@@ -883,11 +894,12 @@ fn xml_inheritance(ctx: &mut Ctx, inh: &Element, pou: &Pou) {
 }
 
 /// The METHODs of a POU in CODESYS's vendor data (`addData/data[.../method]/Method`, with an
-/// `<interface>` and an ST `<body>`), read for a function block, and its PROPERTYs
+/// `<interface>` and an ST `<body>`), read for a function block or a program, and its PROPERTYs
 /// (`.../property`: `<Property name="P">` with `<interface><returnType>`, and a `<GetAccessor>`
 /// and/or `<SetAccessor>` each with its own `<interface>` and ST `<body>`) as the methods of their
-/// accessors (`il_frontend::st::property`); a method or property of another POU, or one whose body
-/// is not ST, is E0303.
+/// accessors (`il_frontend::st::property`); a PROGRAM's too (CODESYS V3 lets a program have
+/// methods and properties, called inside it or as `PRG.M(x)`); a method or property of a function,
+/// or one whose body is not ST, is E0303.
 fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::file::PendingMethod> {
     let mut out = Vec::new();
     for data in p
@@ -911,11 +923,13 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
                 .filter(|c| matches!(c.name(), "GetAccessor" | "SetAccessor"))
                 .collect();
             let body_st = |a: &Element| a.child("body").and_then(|b| b.child("ST")).is_some();
-            let why = if pou.kind != PouKind::FunctionBlock {
+            // CODESYS V3 gives a PROGRAM methods and properties too, exported in the same vendor
+            // data as a function block's (the ST front end compiles them in text: `PRG.M(x)`)
+            let why = if !matches!(pou.kind, PouKind::FunctionBlock | PouKind::Program) {
                 Some(if method {
-                    "methods are compiled for function blocks only".to_string()
+                    "methods are compiled for function blocks and programs only".to_string()
                 } else {
-                    "properties are compiled for function blocks only".to_string()
+                    "properties are compiled for function blocks and programs only".to_string()
                 })
             } else if !values::is_ident(name) {
                 Some(format!(
@@ -959,6 +973,8 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
             }
             if let Some(iface) = m.child("interface") {
                 read_member_interface(ctx, p, iface, &mut ret, &mut blocks);
+                // a variable-length in-out (`codesys_vla`), split as the block's are
+                il_frontend::st::varlen::split_blocks(&mut blocks);
             }
             let ident = Ident::new(name, ctx.attr_span(m, "name"));
             let st = st.expect("checked above");
@@ -1371,14 +1387,26 @@ fn resource_with(ctx: &mut Ctx, r: &Element, globals: bool) -> Option<Resource> 
     let mut programs = Vec::new();
     for t in r.children_named("task") {
         let Some(task) = task(ctx, t) else { continue };
+        let mut calls = 0;
+        let mut library_calls = 0;
         for pi in t.children_named("pouInstance") {
-            if let Some(p) = program_instance(ctx, pi, Some(&task.name)) {
+            calls += 1;
+            if library_program_call(ctx, pi, Some(&task.name)) {
+                library_calls += 1;
+            } else if let Some(p) = program_instance(ctx, pi, Some(&task.name)) {
                 programs.push(p);
             }
         }
-        tasks.push(task);
+        // a task that runs only library programs (CODESYS's VISU_TASK) is left out with them:
+        // it has nothing left to run
+        if calls == 0 || library_calls < calls {
+            tasks.push(task);
+        }
     }
     for pi in r.children_named("pouInstance") {
+        if library_program_call(ctx, pi, None) {
+            continue;
+        }
         if let Some(p) = program_instance(ctx, pi, None) {
             programs.push(p);
         }
@@ -1531,6 +1559,38 @@ fn task_settings_interval(ctx: &mut Ctx, t: &Element) -> Option<Operand> {
     })
 }
 
+/// Whether `pi` calls a program of a library, which the export does not hold: a library-qualified
+/// name (`VisuElems.Visu_Prg`, the visualisation program CODESYS V3 generates and runs in its
+/// `VISU_TASK`) with an empty `typeName` (or the same name). It is left out with one W1447 naming
+/// it, as the same call in a TwinCAT task file is. A program of the project is never qualified, so
+/// an instance named after one (`name="PLC_PRG" typeName=""`) is not such a call.
+fn library_program_call(ctx: &mut Ctx, pi: &Element, task: Option<&Ident>) -> bool {
+    let Some(name) = pi.attr("name").map(str::trim) else {
+        return false;
+    };
+    let ty = pi
+        .attr("typeName")
+        .or_else(|| pi.attr("type"))
+        .map(str::trim)
+        .unwrap_or("");
+    let qualified = name.contains('.') && name.split('.').all(values::is_ident);
+    if !qualified || !(ty.is_empty() || ty.eq_ignore_ascii_case(name)) {
+        return false;
+    }
+    let library = name.split('.').next().unwrap_or(name);
+    let in_task = task.map_or(String::new(), |t| format!(" of task `{}`", t.name));
+    ctx.report(
+        Diagnostic::warning(
+            code::W1447,
+            format!("program `{name}`{in_task} is left out: it comes from library `{library}`, not from this file"),
+        )
+        .at(ctx.attr_span(pi, "name"))
+        .with_primary_label("a library's program (CODESYS writes its visualisation's `VisuElems.Visu_Prg` so)")
+        .with_hint("nothing to do for a visualisation; a library program the application needs must be given as a POU of the project"),
+    );
+    true
+}
+
 fn program_instance(ctx: &mut Ctx, pi: &Element, task: Option<&Ident>) -> Option<ProgramInstance> {
     let span = ctx.tag(pi);
     let name = pi
@@ -1551,11 +1611,19 @@ fn program_instance(ctx: &mut Ctx, pi: &Element, task: Option<&Ident>) -> Option
         .or(name)
         .filter(|n| values::is_ident(n));
     let (Some(name), Some(ty)) = (name, ty) else {
-        ctx.error(
-            code::E3013,
-            span,
-            "program instance needs a `name` and a `typeName`",
-        );
+        match (pi.attr("name").map(str::trim), name) {
+            // a name that is there but not an identifier: say so, at the name
+            (Some(bad), None) if !bad.is_empty() => ctx.error(
+                code::E3013,
+                ctx.attr_span(pi, "name"),
+                format!("program instance name `{bad}` is not an IEC 61131-3 identifier"),
+            ),
+            _ => ctx.error(
+                code::E3013,
+                span,
+                "program instance needs a `name` and a `typeName`",
+            ),
+        }
         return None;
     };
     Some(ProgramInstance {

@@ -5,7 +5,8 @@
 //! segments; every element knows the byte range of its start tag and of its whole extent.
 //! Invariants: all offsets are byte offsets into the original text (BOM included); text segments keep
 //! their raw position so that bodies embedded in the XML can be mapped back (see [`Element::text`]).
-//! A malformed document yields the tree read so far plus the error position: the caller reports it.
+//! A malformed document yields the tree read so far plus the error position: the caller reports it
+//! (a start tag's attributes are checked by [`crate::xml_attrs`]).
 //! Left out of the tree: empty `<relPosition>` and `<connectionPointOut>` elements, which nothing reads
 //! (see `unread`).
 //!
@@ -748,6 +749,10 @@ fn parse_plain<'a>(body: &'a str, base: usize, arena: &'a Arena) -> Option<Optio
                     };
                     plain_element(raw, base, lt, after, decoded)
                 };
+                if crate::xml_attrs::fault(content.strip_suffix('/').unwrap_or(content)).is_some() {
+                    // not well-formed: quick-xml's reading reports it
+                    return None;
+                }
                 match content.strip_suffix('/') {
                     Some(raw) => tree.attach(element(raw)),
                     None => {
@@ -801,6 +806,13 @@ fn parse_quick_xml<'a>(
             Event::Start(_) | Event::Empty(_) => {
                 let raw = &body[pos + 1..after.saturating_sub(1).max(pos + 1)];
                 let raw = raw.strip_suffix('/').unwrap_or(raw);
+                if let Some((at, message)) = crate::xml_attrs::fault(raw) {
+                    let err = XmlError {
+                        message,
+                        pos: base + pos + 1 + at,
+                    };
+                    return (tree.finish(), Some(err));
+                }
                 let el = start_element(raw, base, pos, after, arena);
                 if matches!(ev, Event::Start(_)) {
                     if tree.stack.len() >= MAX_DEPTH {
@@ -1232,7 +1244,7 @@ mod tests {
             // `&` in attribute values (the tag scan notes it; the values are decoded), in and out of
             // quotes, next to a `>` and the other quote inside a value
             "<a x=\"1&amp;2\" y='&lt;&#x41;'><b z=\"'>&quot;\"/></a>",
-            "<a x=\"&bogus;\" & y=\"2\"/>",
+            "<a x=\"&bogus;\" y=\"2\"/>",
         ];
         for xml in taken {
             assert!(both(xml).is_some(), "{xml:?} should take the plain path");
@@ -1267,6 +1279,9 @@ mod tests {
             "<a><![cdata[x]]></a>",
             "\u{feff}\u{feff}<a/>",
             "<a>x<",
+            // not well-formed attributes (`xml_attrs`): a stray `&`, a name starting with `@`
+            "<a x=\"&bogus;\" & y=\"2\"/>",
+            "<a @_x=\"1\"/>",
         ];
         // quick-xml must not be handed a leading mark (it drops it and its positions shift).
         for xml in [

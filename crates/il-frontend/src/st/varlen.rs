@@ -100,8 +100,9 @@ fn hidden(v: &VarDecl) -> Vec<VarDecl> {
 }
 
 /// Splits every variable-length VAR_IN_OUT among `blocks` into its hidden inputs, keeping the
-/// order of the parameters (a block is cut where its kind changes). Whether one was split.
-pub(super) fn split_blocks(blocks: &mut Vec<VarBlock>) -> bool {
+/// order of the parameters (a block is cut where its kind changes). Whether one was split. (Also
+/// called by the PLCopen XML reader on the interfaces it reads.)
+pub fn split_blocks(blocks: &mut Vec<VarBlock>) -> bool {
     if !blocks
         .iter()
         .any(|b| b.kind == VarKind::InOut && b.vars.iter().any(|v| is_variable(&v.ty)))
