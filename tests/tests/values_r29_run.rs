@@ -9,7 +9,8 @@
 //!   "DATE/DT_TO_<type>"; IEC 61131-3 leaves these conversions to the implementation) (before:
 //!   cut to the day, so `UINT_TO_DATE(35) = UINT_TO_DATE(0)`);
 //! - the POUs of a PLCopen XML file that no program instance uses are checked as the same POUs
-//!   in ST text are (before: skipped unchecked with W3004, exit 0 with undeclared names inside).
+//!   in ST text are (before: skipped unchecked with W3004, exit 0 with undeclared names inside);
+//! - CODESYS's `LTIME()` is the scan clock, as `TIME()` is.
 
 mod common;
 use common::{check_text, column, ladderc, run_text};
@@ -207,4 +208,37 @@ fn unused_pous_compile_and_w3004_is_explained_as_retired() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("no longer raised"), "{text}");
     assert!(!text.contains("not compile yet"), "{text}");
+}
+
+/// CODESYS's `LTIME()` (its help: the time since system start, in nanoseconds) is the scan clock
+/// as `TIME()` is, as an LTIME: 0 in the first cycle, then 10 ms a cycle, and it takes no input
+/// (before: E1019 "unknown function `LTIME`", 17 times in tkucic's CODESYS speed tests).
+#[test]
+fn ltime_function_is_the_scan_clock() {
+    let src = "PROGRAM Main
+VAR
+  t : TIME;
+  lt : LTIME;
+  ms : LINT;
+END_VAR
+t := TIME();
+lt := LTIME();
+ms := LTIME_TO_LINT(LTIME() - LTIME#0ns);
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("clock.st", src, 4, "Main.ms,Main.lt,Main.t");
+    assert!(!stderr.contains("error["), "{stderr}");
+    assert_eq!(
+        column(&trace, "Main.ms"),
+        vec![0.0, 10.0, 20.0, 30.0],
+        "{trace}"
+    );
+    let (code, lines) = check_text("bad.st", &src.replace("lt := LTIME();", "lt := LTIME(5);"));
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.starts_with("bad.st:8:7: error[E1020]")),
+        "{lines:?}"
+    );
 }

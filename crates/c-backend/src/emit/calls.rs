@@ -829,7 +829,7 @@ impl Gen<'_> {
                 }
                 Some(cfmt!("((IEC_BOOL)({}))", parts.join(" & ")))
             }
-            "TIME" if vals.is_empty() => Some("ladderc_now".to_string()),
+            "TIME" | "LTIME" if vals.is_empty() => Some("ladderc_now".to_string()),
             "NOT" => Some(negated(vals.first()?, &ty)),
             "MOVE" => vals.first().cloned(),
             "SEL" => {

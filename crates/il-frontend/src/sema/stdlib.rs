@@ -297,6 +297,9 @@ pub static FUNCTIONS: &[StdFunction] = &[
     // CODESYS and TwinCAT: `TIME()` is the time since the controller started (here the scan
     // clock, the time of the current cycle, as the timers read it)
     f("TIME", &[], false, Ret::Fixed(E::Time), "the time since start (the scan clock; CODESYS, TwinCAT)"),
+    // CODESYS's `LTIME()`: the same clock as an LTIME (its help: "the time since system start,
+    // in nanoseconds")
+    f("LTIME", &[], false, Ret::Fixed(E::Ltime), "the time since start as an LTIME (the scan clock; CODESYS)"),
     // edition 3 (Table 37): dates and times from their parts; an invalid part gives 0 and the range flag
     f(
         "CONCAT_DATE",
