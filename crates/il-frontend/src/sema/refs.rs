@@ -201,7 +201,10 @@ impl Body<'_, '_> {
                 .hint(format!("`{input}` is given a VAR_IN_OUT (or a temporary) of a calling method and is read during the call only: pass it on to a method of the block, or copy the value"));
             return Ty::ERROR;
         }
-        if r.address_of && self.call_variable(v) {
+        if r.address_of
+            && self.call_variable(v)
+            && !(self.instance_args && self.pou().kind != PouKind::Function)
+        {
             // `ADR(v)` of a FUNCTION's input or local, or of a VAR_TEMP (a method's VAR and
             // VAR_TEMP are its block's) (CODESYS, TwinCAT): the address is valid during the call
             // (the variable is an automatic variable of the C function; CODESYS and TwinCAT keep
