@@ -203,10 +203,12 @@ fn an_any_inputs_pvalue_is_a_bounded_pointer_to_the_argument() {
     assert_eq!(column(&trace, "Main.arr[1]"), [2., 2., 0., 0.]);
 }
 
-/// What `.pValue` cannot point into is one located error each: a VAR_TEMP lives for one call
-/// (E0305), a literal has no storage (E1068), a variable holding a pointer or an FB instance could
-/// be forged through its bytes (E1068). A FUNCTION's own variable given to an ANY input is its
-/// address during the call, as `ADR` of it is since round 27 (CODESYS; before: E0305).
+/// What `.pValue` cannot point into is one located error each: a block's VAR_IN_OUT may stand for
+/// a temporary of its caller (E0305), a literal has no storage (E1068), a variable holding a
+/// pointer or an FB instance could be forged through its bytes (E1068). A FUNCTION's own variable
+/// given to an ANY input is its address during the call, as `ADR` of it is since round 27
+/// (CODESYS; before: E0305), and so is a VAR_TEMP since round 29 (`tc_oop_r29_run.rs`; before:
+/// E0305 "a VAR_TEMP variable lives for one call").
 #[test]
 fn pvalue_of_an_argument_without_lasting_storage_is_refused() {
     let f = "FUNCTION F_Sum : DINT\nVAR_INPUT\n    Data : ANY;\nEND_VAR\nF_Sum := BYTE_TO_DINT(Data.pValue[0]);\nEND_FUNCTION\n\n";
@@ -214,14 +216,15 @@ fn pvalue_of_an_argument_without_lasting_storage_is_refused() {
         "temp.st",
         &format!(
             "{f}FUNCTION F_Outer : DINT\nVAR\n    nLocal : DINT := 7;\nEND_VAR\nF_Outer := F_Sum(nLocal);\nEND_FUNCTION\n\n\
-             PROGRAM Main\nVAR\n    b : DINT;\nEND_VAR\nVAR_TEMP\n    t : INT;\nEND_VAR\nb := F_Sum(t) + F_Outer();\nEND_PROGRAM\n"
+             PROGRAM Main\nVAR\n    b : DINT;\nEND_VAR\nVAR_TEMP\n    t : INT;\nEND_VAR\nb := F_Sum(t) + F_Outer();\nEND_PROGRAM\n\n\
+             FUNCTION_BLOCK FB_InOut\nVAR_IN_OUT\n    io : INT;\nEND_VAR\nVAR\n    s : DINT;\nEND_VAR\ns := F_Sum(io);\nEND_FUNCTION_BLOCK\n"
         ),
     )]);
     assert_eq!(code, Some(1));
     assert_eq!(
         lines,
         [
-            "temp.st:22:12: error[E0305]: a reference to `t` is not allowed: a VAR_TEMP variable lives for one call (IEC 61131-3, 6.4.4.10)",
+            "temp.st:32:12: error[E0305]: a reference to `io` is not allowed: a VAR_IN_OUT may stand for a temporary variable of the caller",
         ]
     );
     let (code, lines) = check_files(&[(

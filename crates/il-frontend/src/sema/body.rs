@@ -174,6 +174,9 @@ pub(super) struct Body<'a, 'd> {
     /// `ADR(v)` of a FUNCTION's own variable in the operand the last `LD` read (`sema::refs`):
     /// its `ST` into anything but a variable of the function is W1444.
     pub(super) call_address: Option<crate::Span>,
+    /// Whether the operands being read are the arguments of a `CAL` of an instance (which keeps
+    /// them): `ADR` of a VAR_TEMP of a program or block is refused there (`sema::refs`).
+    pub(super) instance_args: bool,
     /// Whether the last `LD` loaded the never-written initial value of a method's variable
     /// (`__MD_<M>_<X>`): the `ST` after it restarts the variable at the method's start, no copy
     /// the user wrote (no W1437 for an instance restarted so).
@@ -202,6 +205,7 @@ impl Analyzer<'_> {
             typed_generic: None,
             scoped_refs: Default::default(),
             call_address: None,
+            instance_args: false,
             loaded_method_default: false,
         };
         b.scope_reference_inputs(&pou.body);

@@ -1219,6 +1219,22 @@ impl Body<'_, '_> {
         st: &mut State,
         rec: &mut Rec,
     ) {
+        // (an instance keeps what its inputs are given: `ADR` of a VAR_TEMP given to one
+        // outlives the call, E0305 in `refs`)
+        let outer = std::mem::replace(&mut self.instance_args, true);
+        self.cal_checked(span, cond, instance, args, st, rec);
+        self.instance_args = outer;
+    }
+
+    fn cal_checked(
+        &mut self,
+        span: Span,
+        cond: Condition,
+        instance: &VarRef,
+        args: &CallArgs,
+        st: &mut State,
+        rec: &mut Rec,
+    ) {
         if cond != Condition::Always {
             let cr = self.use_cr(st, span, "a conditional CAL");
             self.check_bool(&cr, span, "a conditional CAL");

@@ -201,10 +201,15 @@ impl Body<'_, '_> {
                 .hint(format!("`{input}` is given a VAR_IN_OUT (or a temporary) of a calling method and is read during the call only: pass it on to a method of the block, or copy the value"));
             return Ty::ERROR;
         }
-        if r.address_of && self.function_variable(v) {
-            // `ADR(v)` of a FUNCTION's input or local (CODESYS, TwinCAT): the address is valid
-            // during the call (the variable is an automatic variable of the C function); IEC
-            // 61131-3's REF() refuses it, CODESYS only warns against letting it out of the call
+        if r.address_of
+            && self.call_variable(v)
+            && !(self.instance_args && self.pou().kind != PouKind::Function)
+        {
+            // `ADR(v)` of a FUNCTION's input or local, or of a VAR_TEMP (a method's VAR and
+            // VAR_TEMP are its block's) (CODESYS, TwinCAT): the address is valid during the call
+            // (the variable is an automatic variable of the C function; CODESYS and TwinCAT keep
+            // them on the stack too); IEC 61131-3's REF() refuses it, CODESYS only warns against
+            // letting it out of the call
             self.call_address = Some(r.span);
             return Ty::Known(Type::Ref(Box::new(place.ty)));
         }
@@ -317,25 +322,30 @@ impl Body<'_, '_> {
     /// Why the address of `v` may not be taken (`None`: it may). A `call_scoped` reference
     /// (read during one call only, see [`RefOperand::call_scoped`]) may refer to what lives for
     /// one call.
-    /// Whether `v` is a variable (an element, a field) of the FUNCTION being checked, neither
-    /// located nor reached through a reference, nor a bit of one.
-    fn function_variable(&self, v: &ast::VarRef) -> bool {
+    /// Whether `v` is a variable (an element, a field) that lives for the call of the POU being
+    /// checked: any variable of a FUNCTION, or a VAR_TEMP of a program or function block (a
+    /// method's VAR and VAR_TEMP are VAR_TEMPs of its block: C locals of the block's body
+    /// function, which runs the method); neither located nor reached through a reference, nor a
+    /// bit of one.
+    fn call_variable(&self, v: &ast::VarRef) -> bool {
         let pou = self.pou();
-        pou.kind == PouKind::Function
-            && through_reference_or_part(v).is_none()
-            && pou
-                .var_position(&v.base.name)
-                .is_some_and(|i| pou.vars[i].location.is_none())
+        through_reference_or_part(v).is_none()
+            && pou.var_position(&v.base.name).is_some_and(|i| {
+                pou.vars[i].location.is_none()
+                    && (pou.kind == PouKind::Function || pou.vars[i].kind == VarKind::Temp)
+            })
     }
 
-    /// W1444: `ADR(v)` of a FUNCTION's variable (at `at`) stored by `ST o` into something that
-    /// outlives the call: anything but a plain VAR / VAR_TEMP of the function.
+    /// W1444: `ADR(v)` of a variable that lives for the call ([`Self::call_variable`], at `at`)
+    /// stored by `ST o` into something that outlives the call: anything but a plain VAR /
+    /// VAR_TEMP of the function, or a VAR_TEMP (a method's VAR) of the program or block.
     pub(super) fn call_address_stored(&mut self, at: crate::Span, o: &ast::Operand) {
         self.call_address = None;
         let pou = self.pou();
+        let function = pou.kind == PouKind::Function;
         let local = matches!(o, ast::Operand::Var(x)
         if pou.var_position(&x.base.name).is_some_and(|i| {
-            matches!(pou.vars[i].kind, VarKind::Local | VarKind::Temp)
+            (pou.vars[i].kind == VarKind::Temp || (function && pou.vars[i].kind == VarKind::Local))
                 && !x.accessors.iter().any(|a| matches!(a, Accessor::Deref(_)))
         }));
         if local {
@@ -346,11 +356,16 @@ impl Body<'_, '_> {
             other => format!("{other:?}"),
         };
         let name = pou.name.clone();
+        let what = if function {
+            "a variable of FUNCTION"
+        } else {
+            "a VAR_TEMP (or a method's variable) of"
+        };
         self.a
             .warning(
                 code::W1444,
                 o.span(),
-                format!("`{target}` keeps the address of a variable of FUNCTION `{name}`, which lives for one call"),
+                format!("`{target}` keeps the address of {what} `{name}`, which lives for one call"),
             )
             .label("the pointer leaves the call here")
             .also(at, "the address of the function's variable")

@@ -12,7 +12,8 @@
 //! `F(In := x)` (formal or positional) passes `SIZEOF(x)`, the class of `x`'s type and `ADR(x)`
 //! ([`rewrite`], before the statement is lowered), so `.pValue` is a bounded pointer to the
 //! argument's bytes (sema refuses, E0305, an argument with no address for the whole run, as `ADR`
-//! of it). A call may give any variable, element or field; an argument that is no variable (a
+//! of it; a call of the block's own METHOD passes the address for the call only, so there a
+//! method's VAR or a VAR_TEMP may be given: [`address_for_one_call`]). A call may give any variable, element or field; an argument that is no variable (a
 //! literal, an expression) is E1068, as is an argument outside the input's family (`ANY_NUM` given
 //! a BOOL). `In` read as a value (`ADR(In)`, `SIZEOF(In)`) is E1068 in the function.
 //!
@@ -278,6 +279,27 @@ fn split_block(b: &mut crate::ast::VarBlock, body: &str, always_address: bool) {
         }
     }
     b.vars = vars;
+}
+
+/// `ADR(x)`, the address [`Rewrite::call`] gives a hidden address input, made for one call
+/// (`ADR` becomes [`super::varlen::CALL_ADDRESS`], call-scoped): what a call of the block's own
+/// METHOD passes, since the method reads it during that call only (its `In__PVALUE` is reset to
+/// NULL when the call returns, `PouLowering::method_call`); `None` for any other value (an ANY
+/// input passed on: the caller's own address input).
+pub(super) fn address_for_one_call(value: &Expr) -> Option<Expr> {
+    let ExprKind::Call { name, args } = &value.kind else {
+        return None;
+    };
+    if !name.is("ADR") || args.len() != 1 || args[0].name.is_some() {
+        return None;
+    }
+    Some(Expr {
+        kind: ExprKind::Call {
+            name: Ident::new(super::varlen::CALL_ADDRESS, name.span),
+            args: args.clone(),
+        },
+        span: value.span,
+    })
 }
 
 /// Whether `input` is the hidden address input of an ANY input (`In__PVALUE`).

@@ -21,7 +21,8 @@
 //! its own instances first, through its [`ACTION`], then its bases' FB_init, then its FB_init, then
 //! the inputs its declaration's structured initial value sets, again, and its methods marked
 //! `{attribute 'call_after_init'}`; an array element by element, a structure field by field), and
-//! one hidden PROGRAM [`PROGRAM`] does so for the global variables,
+//! one hidden PROGRAM [`PROGRAM`] does so for the global variables (after it assigns the global
+//! lists' interface variables their instances and computes their run-time initial values),
 //! then runs every program's [`ACTION`]. The C backend runs that program once, before the first
 //! cycle, never in a cycle. Invariants: a project without FB_init methods is unchanged; every
 //! argument that goes nowhere is one E0329 naming it; an array of more than [`MAX_ELEMENTS`]
@@ -84,11 +85,13 @@ impl Block {
 
 /// See the module documentation. `pending` holds the FB_init arguments of every file.
 /// `declared`: the blocks (upper-case names) whose text declares an FB_init, also those that are
-/// not compiled (their own error is reported: arguments for their instances are no E0329 more).
+/// not compiled (their own error is reported: arguments for their instances are no E0329 more);
+/// `interface_globals`: the assignments that give the global lists' interface variables their
+/// instances (`super::interface_vars::global_initial_values`), run first.
 pub fn add_init_calls(
     units: &mut [CompilationUnit],
     pending: &[PendingBody],
-    declared: &HashSet<String>,
+    (declared, interface_globals): (&HashSet<String>, Vec<Stmt>),
     decls: &mut super::Declarations,
     diags: &mut Diagnostics,
 ) {
@@ -234,7 +237,7 @@ pub fn add_init_calls(
     let global_inits = pending
         .iter()
         .any(|pb| pb.name_start == usize::MAX && !pb.var_inits.is_empty());
-    if !has_fb_init && args.is_empty() && !global_inits {
+    if !has_fb_init && args.is_empty() && !global_inits && interface_globals.is_empty() {
         return;
     }
     // every POU's kind and variables
@@ -421,9 +424,11 @@ pub fn add_init_calls(
             computed.extend(stmts);
         }
     }
-    if !computed.is_empty() {
-        computed.append(&mut globals);
-        globals = computed;
+    if !computed.is_empty() || !interface_globals.is_empty() {
+        let mut first = interface_globals;
+        first.append(&mut computed);
+        first.append(&mut globals);
+        globals = first;
     }
     if bodies.is_empty() && globals.is_empty() {
         return;

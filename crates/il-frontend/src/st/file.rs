@@ -2184,6 +2184,15 @@ fn parse_text_as_read(
             blank(&mut text, r.clone());
         }
         if p.sfc.is_some() {
+            // `FUNCTION_BLOCK Seq EXTENDS FB_Base IMPLEMENTS I_X` with an SFC body (TwinCAT lets
+            // any function block extend another, whatever the language of its body: Infosys
+            // "Extending a function block"): the declarations are read without the clause, and
+            // the block is flattened with its bases as an ST block is (`super::inherit`; before
+            // round 29 the clause was read as the first instruction: E0015)
+            if let Some(h) = &p.heritage {
+                blank(&mut text, h.clone());
+            }
+            let oop = super::inherit::Oop::block(file, src, p);
             // the methods and properties of a chart's block (TwinCAT, CODESYS) are cut out of the
             // chart (blanked, so positions stay) and lowered with the block
             let mut body = src.to_string();
@@ -2206,7 +2215,7 @@ fn parse_text_as_read(
                 sfc: true,
                 il: false,
                 methods,
-                oop: None,
+                oop: oop.map(Box::new),
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
                 lone: None,
@@ -2862,8 +2871,10 @@ pub fn compile_pending(
                 p.var_blocks.extend(temps);
                 // interface variables with an initial value, and variables whose initial value
                 // calls a function: assigned when the POU first runs
-                let own: Vec<&super::interface_vars::Init> =
-                    inits.iter().filter(|i| i.pou == p.name.span).collect();
+                let own: Vec<&super::interface_vars::Init> = inits
+                    .iter()
+                    .filter(|i| i.pou == Some(p.name.span))
+                    .collect();
                 let computed: Vec<super::ast::Stmt> = pb
                     .var_inits
                     .iter()
@@ -2924,7 +2935,15 @@ pub fn compile_pending(
         }
     }
     // FB_init: each instance's, before the first cycle, with its declaration's arguments
-    super::fb_init::add_init_calls(units, pending, &declares_fb_init, &mut decls, diags);
+    // (and the global lists' interface variables their instances, before it)
+    let global_itf = super::interface_vars::global_initial_values(&inits, diags);
+    super::fb_init::add_init_calls(
+        units,
+        pending,
+        (&declares_fb_init, global_itf),
+        &mut decls,
+        diags,
+    );
     // VAR_STAT: one copy for every instance and call, now that the bodies are lowered
     super::var_stat::hoist(units);
     let seen: std::collections::HashSet<_> = diags

@@ -163,6 +163,9 @@ struct Class {
     pending: Option<usize>,
     /// Its body is non-empty IL (no pending body): `SUPER^()` cannot run it.
     il_body: bool,
+    /// Its body is SFC (a chart, lowered by the caller, not as a method): `SUPER^()` cannot run
+    /// it.
+    sfc_body: bool,
     oop: BlockOop,
 }
 
@@ -182,10 +185,11 @@ pub fn flatten(
         return None;
     }
     let mut out: Vec<PendingBody> = pending.to_vec();
+    // (a block whose body is SFC too: its EXTENDS, its methods and actions for the blocks that
+    // extend it)
     let by_start: HashMap<(FileId, usize), usize> = pending
         .iter()
         .enumerate()
-        .filter(|(_, pb)| !pb.sfc)
         .map(|(k, pb)| ((pb.file, pb.name_start), k))
         .collect();
     let mut classes: HashMap<String, Class> = HashMap::new();
@@ -210,6 +214,7 @@ pub fn flatten(
             vars: p.var_blocks.clone(),
             pending: k,
             il_body: k.is_none() && !p.body.is_empty(),
+            sfc_body: k.is_some_and(|k| pending[k].sfc),
             oop,
         });
     }
@@ -1020,19 +1025,57 @@ impl Rewrite<'_> {
                     out.replace_range(prefix, &replacement);
                 }
                 Some(Tok::LParen) => {
-                    if self.levels[parent].il_body {
+                    let base = self.levels[parent];
+                    if base.il_body || base.sfc_body {
+                        let (language, hint) = if base.sfc_body {
+                            (
+                                "SFC",
+                                "ladderc runs a chart as the body of its own block only: move the work SUPER^() should do into a METHOD of the base and call it (`SUPER^.Step();`), or write the base's body in Structured Text",
+                            )
+                        } else {
+                            (
+                                "instruction list",
+                                "write the base's body in Structured Text",
+                            )
+                        };
                         diags.push(
                             Diagnostic::error(
                                 code::E0303,
                                 format!(
-                                    "SUPER^() runs the body of `{}`, which is instruction list: not supported",
-                                    self.levels[parent].name.name
+                                    "SUPER^() runs the body of `{}`, which is {language}: not supported",
+                                    base.name.name
                                 ),
                             )
                             .at(at)
-                            .with_primary_label("the base's body is IL")
-                            .with_hint("write the base's body in Structured Text"),
+                            .with_primary_label(format!(
+                                "the base's body is {}",
+                                if base.sfc_body { "SFC" } else { "IL" }
+                            ))
+                            .with_hint(hint),
                         );
+                        // the call is left out (blanked up to its `)`, so that positions stay):
+                        // one error, no E0108 for the `SUPER^` left behind
+                        let mut depth = 0usize;
+                        let close = toks[k + 2..].iter().position(|t| {
+                            match t.tok {
+                                Tok::LParen => depth += 1,
+                                Tok::RParen => depth = depth.saturating_sub(1),
+                                _ => {}
+                            }
+                            depth == 0
+                        });
+                        if let Some(m) = close.map(|m| k + 2 + m) {
+                            let range = toks[k].range.start..toks[m].range.end;
+                            let blanked: String = out
+                                .get(range.clone())
+                                .unwrap_or("")
+                                .chars()
+                                .map(|c| if c == '\n' || c == '\r' { c } else { ' ' })
+                                .collect();
+                            if blanked.len() == range.len() {
+                                out.replace_range(range, &blanked);
+                            }
+                        }
                         continue;
                     }
                     self.needed.push(Hidden::Body(parent));
@@ -1298,8 +1341,9 @@ fn array_of_instances(
 
 /// Variables whose type is an ABSTRACT block (E0333: not compiled), and the initial values of
 /// variables of an interface type: `:= 0` is left out (an interface starts unassigned), `:= inst`
-/// of a POU's variable is returned (assigned when the POU first runs); any other, and any of a
-/// VAR_GLOBAL, is E0336 (the value is left out).
+/// (or `:= [inst1, 0, inst2]` for a one-dimensional array) is returned: a POU's assigned when the
+/// POU first runs, a VAR_GLOBAL's once before the first cycle (round 29, before: E0336); any
+/// other is E0336 (the value is left out).
 fn check_instances(
     units: &mut [CompilationUnit],
     classes: &HashMap<String, Class>,
@@ -1336,7 +1380,7 @@ fn check_instances(
         match (&init, pou, &v.ty) {
             (Initializer::Value(Operand::Literal(l)), _, _)
                 if matches!(l.kind, crate::ast::LiteralKind::Int(0)) => {}
-            (Initializer::Value(Operand::Var(value)), Some(pou), TypeRef::Named(_))
+            (Initializer::Value(Operand::Var(value)), pou, TypeRef::Named(_))
                 if !value.base.is("NULL") =>
             {
                 inits.push(super::interface_vars::Init {
@@ -1349,7 +1393,7 @@ fn check_instances(
             (Initializer::Value(Operand::Var(value)), _, _) if value.base.is("NULL") => {}
             // `LampCtrl : ARRAY[0..1] OF I_LampCtrl := [fbLamp1, fbLamp2];` (TwinCAT): element
             // by element, from the first index; `0`/`NULL` elements start unassigned
-            (Initializer::Array(elems, _), Some(pou), TypeRef::Array { dims, .. })
+            (Initializer::Array(elems, _), pou, TypeRef::Array { dims, .. })
                 if dims.len() == 1
                     && array_of_instances(elems, dims[0].upper - dims[0].lower + 1).is_some() =>
             {
@@ -1374,7 +1418,7 @@ fn check_instances(
                     ),
                 )
                 .at(v.span)
-                .with_primary_label("only `:= 0` or `:= instance` of a POU's own variable")
+                .with_primary_label("only `:= 0`, `:= instance` or `:= [instance, 0, ...]`")
                 .with_hint(format!(
                     "assign it in the body (`{} := fbInstance;`)",
                     v.name.name

@@ -18,7 +18,10 @@
 //! the references (`REF(inst)`), `itf := 0;` clears them; `itf.M(args);` is a CASE on the tag calling
 //! `itf.__R_<FB>^.M(args)` and copying its result; `itf = 0`, `itf <> 0` test the tag, `i1 = i2`
 //! the tags and the references; an instance passed to an input of interface type is assigned to the
-//! input before the call.
+//! input before the call. An interface variable's initial value (`itf : I := inst;`,
+//! `itfs : ARRAY[1..2] OF I := [fb1, fb2];`) is such an assignment: a POU's when it first runs
+//! ([`initial_values`]), a global list's once before the first cycle ([`global_initial_values`],
+//! run by `super::fb_init`'s hidden program).
 //! Invariants: a call through an unassigned interface (tag 0) calls nothing: its result reads 0 and
 //! the run reports "NULL reference dereferenced (first: itf.__UNASSIGNED^ in POU)" at its end, like
 //! a NULL `REF_TO`, and goes on; an instance may only be assigned where its address may be taken
@@ -232,8 +235,9 @@ pub fn table(
 /// The initial value of an interface variable of a POU: `itf : I_Shape := fbCircle;`.
 #[derive(Debug, Clone)]
 pub struct Init {
-    /// The name of the POU that declares it (its span identifies the POU).
-    pub pou: Span,
+    /// The name of the POU that declares it (its span identifies the POU); `None` for a
+    /// variable of a global list (assigned before the first cycle: [`global_initial_values`]).
+    pub pou: Option<Span>,
     /// The interface variable.
     pub var: Ident,
     /// The element of an ARRAY OF an interface (`itfs : ARRAY[0..1] OF I_Lamp := [fb1, fb2];`):
@@ -247,24 +251,9 @@ pub struct Init {
 /// values: set once they are assigned.
 pub const INIT_FLAG: &str = "__ITF_INIT";
 
-/// The IL that gives the interface variables of `p` their initial values (`inits`, all of `p`),
-/// then the variables whose initial value is computed at run time (`computed`, assignments):
-/// in a FUNCTION at each call, in a FUNCTION_BLOCK or PROGRAM the first time its body or one of
-/// its methods runs (behind the hidden flag [`INIT_FLAG`], declared in `p`). CODESYS and TwinCAT
-/// assign them before the first cycle; here a call through them before the POU first runs finds
-/// them unassigned. Empty when `inits` is.
-pub fn initial_values(
-    decls: &super::Declarations,
-    p: &mut crate::ast::Pou,
-    inits: &[&Init],
-    computed: Vec<Stmt>,
-    diags: &mut Diagnostics,
-) -> Vec<crate::ast::IlStmt> {
-    let span = match (inits.first(), computed.first()) {
-        (Some(first), _) => first.var.span,
-        (None, Some(s)) => s.span,
-        (None, None) => return Vec::new(),
-    };
+/// The assignments `itf := inst;` (`itfs[k] := inst;`) that give interface variables their initial
+/// values `inits`; `None` after an E0336 (an instance written with an index).
+fn assignments(inits: &[&Init], diags: &mut Diagnostics) -> Option<Vec<Stmt>> {
     let mut body = Vec::new();
     for i in inits {
         let v = &i.value;
@@ -286,7 +275,7 @@ pub fn initial_values(
                         .with_primary_label("an array element")
                         .with_hint(format!("assign it in the body (`{} := ...;`)", i.var.name)),
                     );
-                    return Vec::new();
+                    return None;
                 }
             }
         }
@@ -305,6 +294,41 @@ pub fn initial_values(
         };
         body.push(assign(target, place_expr(value, v.span), v.span));
     }
+    Some(body)
+}
+
+/// The statements that give the interface variables of the global lists their initial values
+/// (`aItf : ARRAY[1..2] OF I_Log := [GVL_Dev.fbCyl1.fbLog, fbP];` in a TwinCAT GVL: Beckhoff
+/// Infosys "Interface": an interface variable is assigned an instance): run by
+/// `super::fb_init`'s hidden program once before the first cycle, before any FB_init, as
+/// TwinCAT assigns initial values before it calls FB_init. The instances are globals or parts of
+/// them (the value names no POU's variable), whose addresses are fixed for the whole run.
+pub fn global_initial_values(inits: &[Init], diags: &mut Diagnostics) -> Vec<Stmt> {
+    let globals: Vec<&Init> = inits.iter().filter(|i| i.pou.is_none()).collect();
+    assignments(&globals, diags).unwrap_or_default()
+}
+
+/// The IL that gives the interface variables of `p` their initial values (`inits`, all of `p`),
+/// then the variables whose initial value is computed at run time (`computed`, assignments):
+/// in a FUNCTION at each call, in a FUNCTION_BLOCK or PROGRAM the first time its body or one of
+/// its methods runs (behind the hidden flag [`INIT_FLAG`], declared in `p`). CODESYS and TwinCAT
+/// assign them before the first cycle; here a call through them before the POU first runs finds
+/// them unassigned. Empty when `inits` is.
+pub fn initial_values(
+    decls: &super::Declarations,
+    p: &mut crate::ast::Pou,
+    inits: &[&Init],
+    computed: Vec<Stmt>,
+    diags: &mut Diagnostics,
+) -> Vec<crate::ast::IlStmt> {
+    let span = match (inits.first(), computed.first()) {
+        (Some(first), _) => first.var.span,
+        (None, Some(s)) => s.span,
+        (None, None) => return Vec::new(),
+    };
+    let Some(mut body) = assignments(inits, diags) else {
+        return Vec::new();
+    };
     // the run-time initial values of other variables (`n : UDINT := MIN(250000, k / 25);`,
     // `super::pou_inits::pou_run_time_inits`), in declaration order
     body.extend(computed);

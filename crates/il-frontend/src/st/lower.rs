@@ -513,6 +513,24 @@ impl<'d> PouLowering<'d> {
                                 },
                                 span: a.span,
                             },
+                            // the address of an argument given to an ANY input (`In__PVALUE :=
+                            // ADR(x)`, `super::any_inputs`): made for this call (call-scoped, as
+                            // an `ARRAY [*]` argument's), so that `x` may be a variable that
+                            // lives for the call (a method's VAR, a VAR_TEMP; TwinCAT passes an
+                            // ANY argument as a pointer read during the call, Infosys "ANY and
+                            // ANY_<type>"); reset to NULL when the call returns
+                            _ if super::any_inputs::is_address_input(&param) => {
+                                match super::any_inputs::address_for_one_call(&a.value) {
+                                    Some(value) => {
+                                        bound_refs.push(Ident::new(
+                                            crate::actions::method_var(&sig.name, &param),
+                                            a.span,
+                                        ));
+                                        value
+                                    }
+                                    None => a.value.clone(),
+                                }
+                            }
                             _ => a.value.clone(),
                         },
                         target: hidden,
