@@ -285,6 +285,24 @@ pub(super) fn is_var_keyword(w: &str) -> bool {
     )
 }
 
+/// `TYPE`, `FUNCTION`, `VAR_INPUT` ... (upper-case): a word that opens a block outside any POU.
+fn is_block_keyword(w: &str) -> bool {
+    is_var_keyword(w)
+        || matches!(
+            w,
+            "TYPE"
+                | "CONFIGURATION"
+                | "RESOURCE"
+                | "ACTIONS"
+                | "ACTION"
+                | "INTERFACE"
+                | "PROGRAM"
+                | "FUNCTION"
+                | "FUNCTION_BLOCK"
+                | "CLASS"
+        )
+}
+
 /// Finds the POUs of a text and the language of each body.
 pub fn scan(src: &str) -> Vec<PouText> {
     let (toks, _) = lex(src);
@@ -327,6 +345,22 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
     while i < n && !matches!(toks[i].tok, Tok::Eof) {
         let t = &toks[i];
         let w = word(src, t).to_ascii_uppercase();
+        // a block keyword after a word of stray text on the same line (`this function adds one`,
+        // `on an external var of type byte`: PC WORX writes a POU's description as bare text) is
+        // one more word of that text, not the start of a block that would swallow the POU after it
+        if i > 0
+            && stray.last() == Some(&(i - 1))
+            && toks[i - 1].tok != Tok::Semi
+            && !src
+                .get(toks[i - 1].range.end..t.range.start)
+                .unwrap_or("\n")
+                .contains('\n')
+            && is_block_keyword(&w)
+        {
+            stray.push(i);
+            i += 1;
+            continue;
+        }
         match w.as_str() {
             "TYPE" => i = skip_to(i + 1, "END_TYPE"),
             // a block `CONFIGURATION c`; a variable so named (`Configuration := 40`, TwinCAT:
@@ -1758,8 +1792,19 @@ fn parse_text_as_read(
         })
         .map(|&k| toks[k].range.clone())
         .collect();
-    let stray: Vec<Range<usize>> = if stray_st {
-        stray.iter().map(|&k| toks[k].range.clone()).collect()
+    // words outside every block of an `.st` file that has POUs (PC WORX writes a POU's description
+    // as bare text between `(*@KEY@:DESCRIPTION*)` and `(*@KEY@:END_DESCRIPTION*)`): no implicit
+    // IL program (that is an `.il` file's form), one error, and the POUs around them read
+    let stray_text = lang == Lang::St
+        && !stray_st
+        && !pous.is_empty()
+        && stray.iter().any(|&k| toks[k].tok != Tok::Semi);
+    let stray: Vec<Range<usize>> = if stray_st || stray_text {
+        stray
+            .iter()
+            .filter(|&&k| stray_st || toks[k].tok != Tok::Semi)
+            .map(|&k| toks[k].range.clone())
+            .collect()
     } else {
         Vec::new()
     };
@@ -1882,6 +1927,35 @@ fn parse_text_as_read(
             None => diags.push(unowned),
         }
         blank(&mut text, first.start..last.end);
+    } else if let (true, Some(first), Some(last)) = (stray_text, stray.first(), stray.last()) {
+        // the first line of the text located; the text is not compiled (blanked)
+        let line_end = src[first.start..]
+            .find('\n')
+            .map_or(src.len(), |k| first.start + k);
+        let first_line_end = stray
+            .iter()
+            .filter(|r| r.end <= line_end)
+            .map(|r| r.end)
+            .max()
+            .unwrap_or(first.end);
+        let lines = src[first.start..last.end].lines().count();
+        diags.push(
+            Diagnostic::error(
+                code::E0307,
+                "text outside any POU: a Structured Text file holds other text only in comments",
+            )
+            .at(trim_span(src, Span::new(file, first.start, first_line_end)))
+            .with_primary_label(format!(
+                "not compiled (the text outside POUs spans {lines} line{})",
+                if lines == 1 { "" } else { "s" }
+            ))
+            .with_hint(
+                "put a description in a comment `(* ... *)`; the POUs before and after it are read",
+            ),
+        );
+        for r in &stray {
+            blank(&mut text, r.clone());
+        }
     } else if let (Some(first), Some(last)) = (stray.first(), stray.last()) {
         let lines = src[first.start..last.end].lines().count();
         diags.push(
