@@ -1661,6 +1661,19 @@ fn parse_text_as_read(
         }
         None => src,
     };
+    // `FUNCTION Pick<T : ANY_INT> : T` (RuSTy): one E1085, the POU blanked (`generic_headers`)
+    let ungeneric;
+    let src = match (lang == Lang::St)
+        .then(|| super::generic_headers::generic_headers(file, src, &toks, diags))
+        .flatten()
+    {
+        Some(t) => {
+            ungeneric = t;
+            (toks, problems) = lex(&ungeneric);
+            ungeneric.as_str()
+        }
+        None => src,
+    };
     let mut references = RefTypes::default();
     // the structure fields named with a keyword (`keyword_declarations`)
     let mut keyword_fields = Vec::new();
