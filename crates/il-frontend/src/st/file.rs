@@ -285,24 +285,6 @@ pub(super) fn is_var_keyword(w: &str) -> bool {
     )
 }
 
-/// `TYPE`, `FUNCTION`, `VAR_INPUT` ... (upper-case): a word that opens a block outside any POU.
-fn is_block_keyword(w: &str) -> bool {
-    is_var_keyword(w)
-        || matches!(
-            w,
-            "TYPE"
-                | "CONFIGURATION"
-                | "RESOURCE"
-                | "ACTIONS"
-                | "ACTION"
-                | "INTERFACE"
-                | "PROGRAM"
-                | "FUNCTION"
-                | "FUNCTION_BLOCK"
-                | "CLASS"
-        )
-}
-
 /// Finds the POUs of a text and the language of each body.
 pub fn scan(src: &str) -> Vec<PouText> {
     let (toks, _) = lex(src);
@@ -355,7 +337,7 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 .get(toks[i - 1].range.end..t.range.start)
                 .unwrap_or("\n")
                 .contains('\n')
-            && is_block_keyword(&w)
+            && super::stray_text::is_block_keyword(&w)
         {
             stray.push(i);
             i += 1;
@@ -1941,31 +1923,9 @@ fn parse_text_as_read(
         }
         blank(&mut text, first.start..last.end);
     } else if let (true, Some(first), Some(last)) = (stray_text, stray.first(), stray.last()) {
-        // the first line of the text located; the text is not compiled (blanked)
-        let line_end = src[first.start..]
-            .find('\n')
-            .map_or(src.len(), |k| first.start + k);
-        let first_line_end = stray
-            .iter()
-            .filter(|r| r.end <= line_end)
-            .map(|r| r.end)
-            .max()
-            .unwrap_or(first.end);
-        let lines = src[first.start..last.end].lines().count();
-        diags.push(
-            Diagnostic::error(
-                code::E0307,
-                "text outside any POU: a Structured Text file holds other text only in comments",
-            )
-            .at(trim_span(src, Span::new(file, first.start, first_line_end)))
-            .with_primary_label(format!(
-                "not compiled (the text outside POUs spans {lines} line{})",
-                if lines == 1 { "" } else { "s" }
-            ))
-            .with_hint(
-                "put a description in a comment `(* ... *)`; the POUs before and after it are read",
-            ),
-        );
+        diags.push(super::stray_text::text_outside_pous(
+            file, src, &stray, first, last,
+        ));
         for r in &stray {
             blank(&mut text, r.clone());
         }
@@ -2707,7 +2667,7 @@ fn end_at_end_of_file(
 }
 
 /// The first line of `span`'s text, without surrounding white space.
-fn trim_span(src: &str, span: Span) -> Span {
+pub(super) fn trim_span(src: &str, span: Span) -> Span {
     let (s, e) = (span.start as usize, span.end as usize);
     let part = src.get(s..e).unwrap_or("");
     let lead = part.len() - part.trim_start().len();

@@ -40,6 +40,7 @@ pub mod qualifiers;
 pub mod refs;
 mod scl;
 pub mod sfc;
+mod stray_text;
 mod struct_extends;
 pub mod types;
 mod using;
