@@ -330,7 +330,9 @@ fn a_namespace_of_declarations_is_st() {
 }
 
 /// Stray text ending in `function` before `FUNCTION Twice`: one error at the stray text, and
-/// the function and the program after it read as ST.
+/// the function and the program after it read as ST (since round 29 that error is E0307 "text
+/// outside any POU" at the text's first line, `st_diagnostics_r29_run.rs`; before: E0011 at `of`,
+/// the text read as an IL instruction).
 #[test]
 fn stray_text_before_a_pou_is_one_error() {
     let src = "version 1.3 of this function
@@ -351,7 +353,7 @@ END_PROGRAM
     assert_eq!(code, Some(1));
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
-        lines[0].starts_with("prose.st:1:13: error[E0011]"),
+        lines[0].starts_with("prose.st:1:1: error[E0307]: text outside any POU"),
         "{lines:?}"
     );
 }

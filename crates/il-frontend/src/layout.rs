@@ -122,6 +122,9 @@ pub struct Layout<'s> {
     /// (`x AT %B0 : WORD;`, [`Layout::relative_location`]): their first bit, their bits (`None`
     /// for a type whose size the layout does not know) and the location's local byte range.
     relative: Vec<(u64, Option<u64>, usize, usize)>,
+    /// The last token emitted is an `END_STRUCT` that closed a structure: its end (where the
+    /// declaration's `;` belongs when a name follows, [`Layout::missing_struct_semi`]).
+    end_struct_at: Option<usize>,
 }
 
 /// The most lines one [`Tok::Lines`] carries (its list is 64 bytes a line).
@@ -160,6 +163,7 @@ impl<'s> Layout<'s> {
             code_brackets: 0,
             deep_subscript_reported: false,
             line_runs: true,
+            end_struct_at: None,
         }
     }
 
@@ -214,6 +218,9 @@ impl<'s> Layout<'s> {
             )
         );
         self.decl_start = self.var_head || matches!(tok, Tok::Semi | Tok::Word(Word::Struct));
+        if !matches!(tok, Tok::Word(Word::EndStruct)) {
+            self.end_struct_at = None;
+        }
         self.prev2 = self.prev;
         self.prev = last;
         self.out.push_back((start, tok, end));
@@ -344,6 +351,11 @@ impl<'s> Layout<'s> {
 
     /// Block structure bookkeeping for one token; may emit synthetic tokens before it.
     fn structure(&mut self, s: usize, tok: &Tok, e: usize) {
+        if matches!(tok, Tok::Word(Word::Ident)) && self.in_decl() {
+            if let Some(at) = self.end_struct_at.take() {
+                self.missing_struct_semi(at, s, e);
+            }
+        }
         let decl = self.in_decl();
         match tok {
             Tok::Word(w) => match w {
@@ -390,6 +402,7 @@ impl<'s> Layout<'s> {
                     }
                     if matches!(self.stack.last(), Some(Frame::Struct(..))) {
                         self.stack.pop();
+                        self.end_struct_at = Some(e);
                     }
                 }
                 // a variable named `Configuration` (TwinCAT, W1418; elsewhere E1031 in sema) is
@@ -511,6 +524,27 @@ impl<'s> Layout<'s> {
             .with_hint(format!(
                 "end each declaration with `;`{fix}: IEC 61131-3, CODESYS and TwinCAT require it, also before `{keyword}`"
             )),
+        );
+        self.emit(at, Tok::Semi, at);
+    }
+
+    /// `END_STRUCT` (ending at `at`) then the name of the next declaration (`s..e`) without the
+    /// `;` between (`END_STRUCT` / `Pts : ARRAY [0..3] OF P2;`): IEC 61131-3 ends each type and
+    /// variable declaration with `;` (ed. 3, B.1.3), CODESYS and TwinCAT too. One E0011 where the
+    /// `;` belongs, and a synthetic `;` so that the name starts the next declaration, as the hint
+    /// says (before: read as one more field of the closed structure, a second error at `END_TYPE`).
+    fn missing_struct_semi(&mut self, at: usize, s: usize, e: usize) {
+        let name = self.src.get(s..e).unwrap_or("").to_string();
+        self.diags.push(
+            Diagnostic::error(
+                code::E0011,
+                format!("missing `;` after `END_STRUCT` before `{name}`"),
+            )
+            .at(self.span(at, at))
+            .with_primary_label("`;` expected here")
+            .with_hint(
+                "end each declaration with `;` (`END_STRUCT;`): IEC 61131-3, CODESYS and TwinCAT require it",
+            ),
         );
         self.emit(at, Tok::Semi, at);
     }

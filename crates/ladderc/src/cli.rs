@@ -724,10 +724,14 @@ fn add_staticlib(
 }
 
 /// W1441 at the first POU when the inputs declare no PROGRAM and no CONFIGURATION: the cycles
-/// `run` runs do nothing.
-fn nothing_to_run(lowered: &pipeline::Lowered) -> Option<Diagnostic> {
+/// `run` runs do nothing. Inputs that declare no POU at all (a placeholder holding only comments,
+/// only types or only global variables) get it too, at the start of the first input file read.
+fn nothing_to_run(
+    lowered: &pipeline::Lowered,
+    sources: &SourceMap,
+    inputs: &[PathBuf],
+) -> Option<Diagnostic> {
     let model = lowered.model.as_ref()?;
-    let first = model.pous.first()?;
     if !model.configurations.is_empty()
         || model
             .pous
@@ -736,16 +740,33 @@ fn nothing_to_run(lowered: &pipeline::Lowered) -> Option<Diagnostic> {
     {
         return None;
     }
+    let (at, what, label) = match model.pous.first() {
+        Some(first) => (
+            first.span,
+            format!(
+                "{} function block(s) and function(s), which run only when a program calls them",
+                model.pous.len()
+            ),
+            "a POU no program calls",
+        ),
+        None => {
+            let (file, _) = sources
+                .files()
+                .find(|(_, f)| inputs.iter().any(|p| p.display().to_string() == f.name))?;
+            (
+                diagnostics::Span::new(file, 0, 0),
+                "no POU at all".to_string(),
+                "this input declares no POU",
+            )
+        }
+    };
     Some(
         Diagnostic::warning(
             diagnostics::code::W1441,
-            format!(
-                "nothing to run: the inputs declare no PROGRAM ({} function block(s) and function(s), which run only when a program calls them)",
-                model.pous.len()
-            ),
+            format!("nothing to run: the inputs declare no PROGRAM ({what})"),
         )
-        .at(first.span)
-        .with_primary_label("a POU no program calls")
+        .at(at)
+        .with_primary_label(label)
         .with_hint("give the file of the program that uses them as well, or write a PROGRAM that calls them"),
     )
 }
@@ -825,7 +846,7 @@ fn run_program(
     };
     let mut extra = Vec::new();
     let pmac = pmac_text(c, &mut g, &mut extra);
-    extra.extend(nothing_to_run(g.lowered()));
+    extra.extend(nothing_to_run(g.lowered(), g.sources(), &c.project.inputs));
     extra.extend(slower_tasks(g.lowered()));
     let code = finish(g.sources(), g.diagnostics(), extra, format);
     let (lowered, program) = (g.lowered(), g.program());

@@ -1134,6 +1134,68 @@ impl Session {
         }
     }
 
+    /// Whether every error reported while reading the files is one whose cause the reader left
+    /// behind it, so that the checks may run on the rest: E1032 (an unknown library qualifier,
+    /// `Vendor.Connect()`: the qualified names renamed `__...`, which the checks do not report
+    /// again), E1085 (a generic POU, not compiled, its calls not reported again). Then the program's other, independent errors (an undeclared name, a missing global
+    /// list) are reported in the same run (before: the E1032 alone, the rest on the next run).
+    fn only_recovered_parse_errors(&self) -> bool {
+        self.diags
+            .iter()
+            .filter(|d| d.severity == diagnostics::Severity::Error)
+            .all(|d| d.code == code::E1032 || d.code == code::E1085)
+    }
+
+    /// The checks' errors at a name an E1032 reported, there or at another use of the same
+    /// library (`Vendor.Connect()` read as `__ndor_Connect`, an unknown function; `DC_ECP.Dtm425`
+    /// as an unknown type), and at a call of a generic POU that E1085 reported (`Pick(1, 2)`, an
+    /// unknown function): the unknown library or the generic POU is their one cause, reported once
+    /// (the checks run after these errors: [`Session::only_recovered_parse_errors`]).
+    fn drop_behind_recovered_errors(&mut self) {
+        // (upper case) each library E1032 named: the text at its span; each generic POU E1085
+        // named: the text at its span up to the `<`
+        let mut libraries = std::collections::HashSet::new();
+        let mut generic = std::collections::HashSet::new();
+        for d in self.diags.iter() {
+            let Some(s) = d.span else { continue };
+            let text = &self.map.get(s.file).text;
+            let Some(at) = text.get(s.start as usize..s.end as usize) else {
+                continue;
+            };
+            if d.code == code::E1032 {
+                libraries.insert(at.to_ascii_uppercase());
+            } else if d.code == code::E1085 {
+                let name = at.split('<').next().unwrap_or(at).trim();
+                generic.insert(name.to_ascii_uppercase());
+            }
+        }
+        if libraries.is_empty() && generic.is_empty() {
+            return;
+        }
+        let map = &self.map;
+        let behind = |s: diagnostics::Span| {
+            let text = &map.get(s.file).text;
+            let at = text.get(s.start as usize..).unwrap_or("");
+            let name_len = at
+                .find(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+                .unwrap_or(at.len());
+            let name = at[..name_len].to_ascii_uppercase();
+            (at[name_len..].starts_with('.') && libraries.contains(&name))
+                || generic.contains(&name)
+        };
+        let mut kept = Diagnostics::new();
+        for d in std::mem::take(&mut self.diags) {
+            if d.code == code::E1032
+                || d.code == code::E1085
+                || d.severity != diagnostics::Severity::Error
+                || !d.span.is_some_and(behind)
+            {
+                kept.push(d);
+            }
+        }
+        self.diags = kept;
+    }
+
     /// The front half: load, check, lower block calls. `None` when errors were reported.
     pub fn lower(&mut self, paths: &[PathBuf], opts: &Options) -> Option<Lowered> {
         let parsed = self.parse(paths, opts)?;
@@ -1156,7 +1218,7 @@ impl Session {
         }
         self.libraries = opts.libraries.clone();
         let units = self.load_as(paths, opts.lang);
-        if self.diags.has_errors() {
+        if self.diags.has_errors() && !self.only_recovered_parse_errors() {
             self.unknown_types_behind_bounds(&units, &library);
             return None;
         }
@@ -1312,6 +1374,7 @@ impl Session {
         };
         let model = self.analyze(&checked);
         self.check_uncalled(&checked, uses_blocks);
+        self.drop_behind_recovered_errors();
         if self.diags.has_errors() {
             if uses_blocks && opts.axes.is_none() && axes.axes.is_empty() && axes.groups.is_empty()
             {

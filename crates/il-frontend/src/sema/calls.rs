@@ -547,10 +547,17 @@ impl Body<'_, '_> {
                     self.pou.0,
                     format!("unknown function {}", name.key()),
                     String::new(),
+                )) && self.a.internal_accessed.insert((
+                    self.pou.0,
+                    format!("undeclared {}", name.key()),
+                    String::new(),
                 ))
             {
                 // one E1019 per POU and name, at its first call (as an undeclared name's E1001):
-                // a missing library function called 100 times is one cause
+                // a missing library function called 100 times is one cause. A name already
+                // reported undeclared in this POU (`fbAxis.Enable := TRUE;` then `fbAxis();`: an
+                // instance whose declaration is missing) is not reported again as a function, and
+                // after this error its other uses (`fbAxis.Done`) are not reported as undeclared
                 self.a
                     .error(code::E1019, name.span, format!("unknown function `{}`", name.name))
                     .label("no such function")

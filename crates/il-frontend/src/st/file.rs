@@ -327,6 +327,22 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
     while i < n && !matches!(toks[i].tok, Tok::Eof) {
         let t = &toks[i];
         let w = word(src, t).to_ascii_uppercase();
+        // a block keyword after a word of stray text on the same line (`this function adds one`,
+        // `on an external var of type byte`: PC WORX writes a POU's description as bare text) is
+        // one more word of that text, not the start of a block that would swallow the POU after it
+        if i > 0
+            && stray.last() == Some(&(i - 1))
+            && toks[i - 1].tok != Tok::Semi
+            && !src
+                .get(toks[i - 1].range.end..t.range.start)
+                .unwrap_or("\n")
+                .contains('\n')
+            && super::stray_text::is_block_keyword(&w)
+        {
+            stray.push(i);
+            i += 1;
+            continue;
+        }
         match w.as_str() {
             "TYPE" => i = skip_to(i + 1, "END_TYPE"),
             // a block `CONFIGURATION c`; a variable so named (`Configuration := 40`, TwinCAT:
@@ -1627,6 +1643,19 @@ fn parse_text_as_read(
         }
         None => src,
     };
+    // `FUNCTION Pick<T : ANY_INT> : T` (RuSTy): one E1085, the POU blanked (`generic_headers`)
+    let ungeneric;
+    let src = match (lang == Lang::St)
+        .then(|| super::generic_headers::generic_headers(file, src, &toks, diags))
+        .flatten()
+    {
+        Some(t) => {
+            ungeneric = t;
+            (toks, problems) = lex(&ungeneric);
+            ungeneric.as_str()
+        }
+        None => src,
+    };
     let mut references = RefTypes::default();
     // the structure fields named with a keyword (`keyword_declarations`)
     let mut keyword_fields = Vec::new();
@@ -1758,8 +1787,19 @@ fn parse_text_as_read(
         })
         .map(|&k| toks[k].range.clone())
         .collect();
-    let stray: Vec<Range<usize>> = if stray_st {
-        stray.iter().map(|&k| toks[k].range.clone()).collect()
+    // words outside every block of an `.st` file that has POUs (PC WORX writes a POU's description
+    // as bare text between `(*@KEY@:DESCRIPTION*)` and `(*@KEY@:END_DESCRIPTION*)`): no implicit
+    // IL program (that is an `.il` file's form), one error, and the POUs around them read
+    let stray_text = lang == Lang::St
+        && !stray_st
+        && !pous.is_empty()
+        && stray.iter().any(|&k| toks[k].tok != Tok::Semi);
+    let stray: Vec<Range<usize>> = if stray_st || stray_text {
+        stray
+            .iter()
+            .filter(|&&k| stray_st || toks[k].tok != Tok::Semi)
+            .map(|&k| toks[k].range.clone())
+            .collect()
     } else {
         Vec::new()
     };
@@ -1882,6 +1922,13 @@ fn parse_text_as_read(
             None => diags.push(unowned),
         }
         blank(&mut text, first.start..last.end);
+    } else if let (true, Some(first), Some(last)) = (stray_text, stray.first(), stray.last()) {
+        diags.push(super::stray_text::text_outside_pous(
+            file, src, &stray, first, last,
+        ));
+        for r in &stray {
+            blank(&mut text, r.clone());
+        }
     } else if let (Some(first), Some(last)) = (stray.first(), stray.last()) {
         let lines = src[first.start..last.end].lines().count();
         diags.push(
@@ -2629,7 +2676,7 @@ fn end_at_end_of_file(
 }
 
 /// The first line of `span`'s text, without surrounding white space.
-fn trim_span(src: &str, span: Span) -> Span {
+pub(super) fn trim_span(src: &str, span: Span) -> Span {
     let (s, e) = (span.start as usize, span.end as usize);
     let part = src.get(s..e).unwrap_or("");
     let lead = part.len() - part.trim_start().len();

@@ -1143,7 +1143,7 @@ fn signature(m: &PendingMethod) -> String {
     s
 }
 
-/// A method's signature for a message: `M(a : INT) : BOOL`; a variable-length in-out as written
+/// A method's signature for a message: `M(a : INT, VAR_OUTPUT q : BOOL) : BOOL`; a variable-length in-out as written
 /// (`a : ARRAY[*] OF LREAL`), not as its hidden inputs (`varlen`).
 fn shown(m: &PendingMethod) -> String {
     let mut ins: Vec<String> = Vec::new();
@@ -1185,6 +1185,21 @@ fn shown(m: &PendingMethod) -> String {
                 ));
             }
             _ => ins.push(format!("{} : {}", v.name.name, type_key(&v.ty))),
+        }
+    }
+    // the outputs and in-outs too (IEC 61131-3 ed. 3, 6.6.5: they are part of the signature the
+    // implementing method repeats), so that two signatures that differ only there read differently
+    for (kind, keyword) in [
+        (VarKind::Output, "VAR_OUTPUT"),
+        (VarKind::InOut, "VAR_IN_OUT"),
+    ] {
+        for v in m
+            .blocks
+            .iter()
+            .filter(|b| b.kind == kind)
+            .flat_map(|b| b.vars.iter())
+        {
+            ins.push(format!("{keyword} {} : {}", v.name.name, type_key(&v.ty)));
         }
     }
     let ret = m
