@@ -4,8 +4,9 @@
 //!   `RESET` and `LOAD` (`CTU(CU, RESET, PV)`, `CTD(CD, LOAD, PV)`, `CTUD(CU, CD, RESET, LOAD, PV)`;
 //!   CODESYS online help "CTU", Beckhoff Infosys "Tc2_Standard: CTU"): in ST calls, as members
 //!   (`ctu.RESET := x`) and as pins of LD/FBD boxes (Keiji01's LabsTreino TwinCAT LD). Was E1011
-//!   (ST) and E3018 (XML). The counters keep IEC's INT `PV`/`CV` (the vendors' are WORD: a WORD
-//!   variable wired to `CV` stays E1006, IEC 61131-3 has no implicit WORD/INT conversion);
+//!   (ST) and E3018 (XML). In these `.st` and plain PLCopen XML files the counters keep IEC's INT
+//!   `PV`/`CV`; in TwinCAT objects and CODESYS files they are the vendors' WORD counters (round 29,
+//!   `tc_forms_r29_run.rs`);
 //! - a number times a duration, `PT := 2 * tCycletime` (MatheusNespolo's FlashGen tutorial): IEC
 //!   61131-3 defines MUL_TIME as TIME * ANY_NUM; CODESYS and TwinCAT also take the number first.
 //!   With both sides plain operands (no call, so no order of side effects to keep) it is read as the

@@ -187,6 +187,8 @@ LADDERC_COUNTER_BODIES(DINT, INT32_MIN, INT32_MAX)
 LADDERC_COUNTER_BODIES(LINT, INT64_MIN, INT64_MAX)
 LADDERC_COUNTER_BODIES(UDINT, 0u, UINT32_MAX)
 LADDERC_COUNTER_BODIES(ULINT, 0u, UINT64_MAX)
+/* Tc2_Standard / CODESYS Standard: CTD counts down "as long as CV is greater than 0" (Infosys). */
+LADDERC_COUNTER_BODIES(WORD, 0u, UINT16_MAX)
 
 /* ------------------------------------------------------------------ strings */
 void ladderc_string_set(IEC_STRING *dst, const char *src, size_t len, unsigned cap) {

@@ -742,6 +742,8 @@ LADDERC_COUNTER_TYPES(DINT)
 LADDERC_COUNTER_TYPES(LINT)
 LADDERC_COUNTER_TYPES(UDINT)
 LADDERC_COUNTER_TYPES(ULINT)
+/* CODESYS's Standard and TwinCAT's Tc2_Standard CTU, CTD, CTUD: PV and CV of type WORD. */
+LADDERC_COUNTER_TYPES(WORD)
 
 #define LADDERC_FB_DECL(N)                                                                         \
     void ladderc_##N##_init(ladderc_##N *fb);                                                     \
@@ -771,6 +773,9 @@ LADDERC_FB_DECL(CTUD_UDINT)
 LADDERC_FB_DECL(CTU_ULINT)
 LADDERC_FB_DECL(CTD_ULINT)
 LADDERC_FB_DECL(CTUD_ULINT)
+LADDERC_FB_DECL(CTU_WORD)
+LADDERC_FB_DECL(CTD_WORD)
+LADDERC_FB_DECL(CTUD_WORD)
 
 /* ------------------------------------------------------------------ the harness contract */
 typedef enum {

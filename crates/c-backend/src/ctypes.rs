@@ -194,6 +194,9 @@ pub fn std_fb(fb: StdFb) -> (&'static str, &'static [(&'static str, Elementary, 
         StdFb::CtudLint => ("ladderc_CTUD_LINT", &const { ctud(E::Lint) }),
         StdFb::CtudUdint => ("ladderc_CTUD_UDINT", &const { ctud(E::Udint) }),
         StdFb::CtudUlint => ("ladderc_CTUD_ULINT", &const { ctud(E::Ulint) }),
+        StdFb::CtuWord => ("ladderc_CTU_WORD", &const { ctu(E::Word) }),
+        StdFb::CtdWord => ("ladderc_CTD_WORD", &const { ctd(E::Word) }),
+        StdFb::CtudWord => ("ladderc_CTUD_WORD", &const { ctud(E::Word) }),
     }
 }
 

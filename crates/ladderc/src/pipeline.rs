@@ -1125,7 +1125,23 @@ impl Session {
             }
         }
         for (w, parsed) in waiting.into_iter().zip(results) {
-            self.diags.extend(w.diags);
+            let mut diags = w.diags;
+            // a bound's constant named as written in the file (a TwinCAT object's qualifiers are
+            // blanked before it is parsed), a library's parameter E1032
+            let original = &self.map.get(w.file).text;
+            for d in diags.since_mut(0) {
+                il_frontend::st::file::library_qualified_bound(d, original);
+            }
+            // (a library is one E1032, at its first use: in a type or in a bound)
+            let library = |d: &Diagnostic| {
+                (d.code == code::E1032)
+                    .then(|| d.message.split('`').nth(1).map(str::to_ascii_uppercase))
+                    .flatten()
+            };
+            let mut named: std::collections::HashSet<String> =
+                self.diags.iter().filter_map(library).collect();
+            diags.retain(|d| library(d).is_none_or(|l| named.insert(l)));
+            self.diags.extend(diags);
             if let Some((unit, bodies, entries)) = parsed {
                 units[w.unit] = unit;
                 pending.extend(bodies);

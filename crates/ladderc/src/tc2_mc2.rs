@@ -3,8 +3,8 @@
 //! Input: the user's parsed units (before the semantic checks) and the block library. Output: the
 //! same units with each call argument and instance field written in a Tc2_MC2 spelling renamed to the
 //! pin it stands for (`fbPower(Enable_Positive := TRUE)` -> `EnablePositive`), and one located E1041
-//! for each Tc2_MC2 pin the simulated axis has no counterpart for (the argument is then dropped, so
-//! that no E1011 follows it). Invariants: only instances of library blocks declared in the POU are
+//! for each Tc2_MC2 pin the simulated axis has no counterpart for (the argument, or the store into
+//! the pin, is then dropped, so that no E1011, E1015 or E1006 follows it). Invariants: only instances of library blocks declared in the POU are
 //! touched; spans stay where the user wrote the names.
 //!
 //! Tc2_MC2 also lets a motion block's `Acceleration` and `Deceleration` be left out or 0: "the
@@ -18,7 +18,9 @@
 //! Per Beckhoff Infosys (Tc2_MC2 > Function blocks > Administrative > MC_Power), MC_Power's inputs
 //! are `Enable`, `Enable_Positive`, `Enable_Negative`, `Override` (LREAL percent, default 100.0) and
 //! `BufferMode`; its outputs `Status`, `Busy`, `Active`, `Error`, `ErrorID`. `Override` becomes a
-//! hidden MC_SetOverride call after the MC_Power call ([`crate::tc2_override`]). `Options` of the
+//! hidden MC_SetOverride call after the MC_Power call ([`crate::tc2_override`]); written by name
+//! (`fbPower.Override := x;`), it is a hidden field that the calls pass and that a call's own
+//! `Override` argument sets. `Options` of the
 //! motion blocks (`ST_*Options`) and MC_Power's `Busy`/`Active` have no counterpart in ladderc's
 //! axis. An array of block instances (`aPower[i](...)`) is read like one instance.
 
@@ -200,9 +202,12 @@ pub(crate) fn declared_types(units: &[CompilationUnit]) -> DeclaredTypes {
 }
 
 /// `fbPower.Override := x;` / `y := fbPower.Override;` of an MC_Power instance called
-/// unconditionally in `body` without an `Override` argument: the field is a hidden LREAL
-/// (100.0 until written, [`crate::tc2_override::written_field`]) that the calls then pass as
-/// their `Override`. Returns the instances (their keys) and the hidden variables' names.
+/// unconditionally in `body`: the field is a hidden LREAL (100.0 until written,
+/// [`crate::tc2_override::written_field`]) that the calls then pass as their `Override`. A call
+/// that passes `Override := v` itself stores `v` into the field first, as it sets the input of the
+/// instance (IEC 61131-3 ed. 3, 6.6.1.2: an input keeps the value last given, by a call or by
+/// `inst.in := v;`, TwinCAT likewise). Returns the instances (their keys) and the hidden
+/// variables' names.
 fn override_fields(
     body: &mut [IlStmt],
     inst: &HashMap<String, String>,
@@ -216,7 +221,7 @@ fn override_fields(
         matches!(v.accessors.as_slice(), [Accessor::Field(f)] if f.key() == "OVERRIDE")
             && is_power(&v.base.key())
     };
-    // the instances whose every call is unconditional and leaves Override out
+    // the instances whose every call is unconditional
     let mut calls: HashMap<String, bool> = HashMap::new();
     let mut written: HashMap<String, Ident> = HashMap::new();
     for s in body.iter() {
@@ -227,11 +232,7 @@ fn override_fields(
                 args,
                 cond,
             } if instance.accessors.is_empty() && is_power(&instance.base.key()) => {
-                let plain = matches!(cond, Condition::Always)
-                    && match args {
-                        CallArgs::Formal(list) => !list.iter().any(|a| a.name.key() == "OVERRIDE"),
-                        _ => true,
-                    };
+                let plain = matches!(cond, Condition::Always);
                 let ok = calls.entry(instance.base.key()).or_insert(true);
                 *ok &= plain;
             }
@@ -279,12 +280,23 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
     let inst = cx.inst;
     let fields = override_fields(body, inst, hidden);
     let mut after: Vec<(usize, Vec<IlStmt>)> = Vec::new();
+    // the stores into a pin with no counterpart (`fbPower.Busy := x;`): reported once (E1041)
+    // and left out, as a store leaves the current result as it is
+    let mut dropped = std::collections::HashSet::new();
     for (k, s) in body.iter_mut().enumerate() {
         let IlStmt::Instr(i) = s else { continue };
         match &mut i.kind {
             InstrKind::Simple {
-                operand: Some(o), ..
-            } => operand(o, inst, diags),
+                op,
+                operand: Some(o),
+                ..
+            } => {
+                let store = matches!(op, Op::St | Op::S | Op::R);
+                if store && matches!(o, Operand::Var(v) if missing_pin(v, inst)) {
+                    dropped.insert(k);
+                }
+                operand(o, inst, diags)
+            }
             InstrKind::Deferred {
                 operand: o, body, ..
             } => {
@@ -314,11 +326,19 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                             }
                         }
                         let mut scale = None;
+                        // the instance's `Override` field (`override_fields`) and the value the
+                        // call gives it
+                        let field = fields.get(&instance.base.key());
+                        let mut given = None;
                         list.retain_mut(|a| {
                             let pin = a.name.key();
                             if let Some(new) = spelling(block, &pin) {
                                 a.name.name = new.to_string();
                                 return true;
+                            }
+                            if pin == "OVERRIDE" && field.is_some() {
+                                given = Some(a.value.clone());
+                                return false;
                             }
                             // `Override := 100.0` is the unscaled velocity: MC_Power without it
                             if pin == "OVERRIDE" && is_hundred(&a.value) {
@@ -340,8 +360,12 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                             }
                         });
                         // the `Override` field the program writes (`override_fields`)
-                        if let Some(name) = fields.get(&instance.base.key()) {
+                        let mut stored = Vec::new();
+                        if let Some(name) = field {
                             let at = instance.span;
+                            if let Some(value) = given {
+                                stored = crate::tc2_override::store_field(value, name, at);
+                            }
                             scale.get_or_insert_with(|| {
                                 Operand::Var(VarRef {
                                     base: Ident::new(name, at),
@@ -365,8 +389,11 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
                                         hidden.push(d);
                                     }
                                 }
-                                after.push((k + 1, code));
+                                stored.extend(code);
                             }
+                        }
+                        if !stored.is_empty() {
+                            after.push((k + 1, stored));
                         }
                         axis_defaults(block, list, instance.span, cx);
                         if unconditional {
@@ -400,8 +427,39 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
             _ => {}
         }
     }
-    for (at, code) in after.into_iter().rev() {
-        body.splice(at..at, code);
+    // the code after the calls, in the order pushed, and the stores left out
+    after.sort_by_key(|(at, _)| *at);
+    let mut after = after.into_iter().peekable();
+    let old = std::mem::take(body);
+    for (k, s) in old.into_iter().enumerate() {
+        while let Some((_, code)) = after.next_if(|(at, _)| *at == k) {
+            body.extend(code);
+        }
+        if !dropped.contains(&k) {
+            body.push(s);
+        }
+    }
+    for (_, code) in after {
+        body.extend(code);
+    }
+}
+
+/// Whether `v` names a Tc2_MC2 pin of an instance in `inst` that ladderc's block does not have
+/// (`fbPower.Busy`, [`NO_COUNTERPART`]).
+fn missing_pin(v: &VarRef, inst: &HashMap<String, String>) -> bool {
+    let Some(block) = inst.get(&v.base.key()) else {
+        return false;
+    };
+    match v
+        .accessors
+        .iter()
+        .find(|a| !matches!(a, Accessor::Index(_)))
+    {
+        Some(Accessor::Field(f)) => {
+            let pin = f.key();
+            spelling(block, &pin).is_none() && missing(block, &pin).is_some()
+        }
+        _ => false,
     }
 }
 
@@ -503,7 +561,8 @@ fn enum_value(v: &mut VarRef) {
 
 /// `fbPower.Enable_Positive` -> `fbPower.EnablePositive`; a pin with no counterpart is one E1041
 /// (the name is kept: sema then has nothing more to say only if the pin exists, so the field is
-/// renamed to the block's `Error` output, which every block has, to stop a second report).
+/// renamed to the block's `Error` output, which every block has, to stop a second report; a store
+/// into the pin is left out by `stmts`, as `Error` is a BOOL output that cannot be written).
 fn var(v: &mut VarRef, inst: &HashMap<String, String>, diags: &mut Diagnostics) {
     let Some(block) = inst.get(&v.base.key()) else {
         return;

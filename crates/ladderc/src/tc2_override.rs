@@ -158,3 +158,20 @@ pub fn written_field(instance: &Ident) -> (String, VarDecl) {
     };
     (name, decl)
 }
+
+/// The IL that stores `value` (the `Override` argument of a call) into the hidden field `field`
+/// ([`written_field`]), so that `fbPower.Override` reads the value the last call gave: `LD value;
+/// ST field` (an integer literal as the LREAL it stands for).
+pub fn store_field(value: Operand, field: &str, at: Span) -> Vec<IlStmt> {
+    let value = match &value {
+        Operand::Literal(l) => match l.kind {
+            LiteralKind::Int(i) => real(i as f64, l.span),
+            _ => value,
+        },
+        _ => value,
+    };
+    vec![
+        simple(Op::Ld, value, at),
+        simple(Op::St, Operand::Var(var(field, at)), at),
+    ]
+}

@@ -871,6 +871,11 @@ impl Analyzer<'_> {
             return Type::Error;
         }
         if let Some(fb) = StdFb::from_name(&n.name) {
+            // `CTU` of a CODESYS or TwinCAT file is its library's, counting in WORD (a name of
+            // edition 3, `CTU_INT`, is IEC's INT counter everywhere)
+            let vendor = super::is_codesys_file(n.span.file)
+                && ["CTU", "CTD", "CTUD"].iter().any(|c| n.is(c));
+            let fb = if vendor { fb.in_vendor_file() } else { fb };
             return Type::Fb(FbType::Standard(fb));
         }
         if n.is("EXCEPTIONCODE") {

@@ -307,6 +307,16 @@ pub enum StdFb {
     CtudUdint,
     /// `CTUD_ULINT`: CTUD with PV and CV of type ULINT (count up on CU and down on CD).
     CtudUlint,
+    /// `CTU` of CODESYS's Standard and TwinCAT's Tc2_Standard library, with PV and CV of type WORD
+    /// (Beckhoff Infosys, Tc2_Standard > CTU: `PV : WORD`, `CV : WORD`): the CTU of a CODESYS or
+    /// TwinCAT file ([`StdFb::in_vendor_file`]); its name is `CTU`.
+    CtuWord,
+    /// `CTD` of CODESYS's Standard and TwinCAT's Tc2_Standard library (PV and CV of type WORD; CV
+    /// counts down while greater than 0, Infosys Tc2_Standard > CTD); its name is `CTD`.
+    CtdWord,
+    /// `CTUD` of CODESYS's Standard and TwinCAT's Tc2_Standard library (PV and CV of type WORD);
+    /// its name is `CTUD`.
+    CtudWord,
     /// `TON_LTIME` (edition 3 Table 46; CODESYS's and TwinCAT's `LTON`): TON with PT and ET of type LTIME.
     TonLtime,
     /// `TOF_LTIME` (edition 3 Table 46; CODESYS's and TwinCAT's `LTOF`): TOF with PT and ET of type LTIME.
@@ -317,7 +327,7 @@ pub enum StdFb {
 
 impl StdFb {
     /// Every standard function block, in declaration order.
-    pub const ALL: [StdFb; 25] = [
+    pub const ALL: [StdFb; 28] = [
         StdFb::RTrig,
         StdFb::FTrig,
         StdFb::Sr,
@@ -340,6 +350,9 @@ impl StdFb {
         StdFb::CtudLint,
         StdFb::CtudUdint,
         StdFb::CtudUlint,
+        StdFb::CtuWord,
+        StdFb::CtdWord,
+        StdFb::CtudWord,
         StdFb::TonLtime,
         StdFb::TofLtime,
         StdFb::TpLtime,
@@ -369,6 +382,9 @@ impl StdFb {
             StdFb::CtudLint => "CTUD_LINT",
             StdFb::CtudUdint => "CTUD_UDINT",
             StdFb::CtudUlint => "CTUD_ULINT",
+            StdFb::CtuWord => "CTU",
+            StdFb::CtdWord => "CTD",
+            StdFb::CtudWord => "CTUD",
             StdFb::TonLtime => "TON_LTIME",
             StdFb::TofLtime => "TOF_LTIME",
             StdFb::TpLtime => "TP_LTIME",
@@ -394,6 +410,9 @@ impl StdFb {
             StdFb::CtudLint => (UpDown, E::Lint),
             StdFb::CtudUdint => (UpDown, E::Udint),
             StdFb::CtudUlint => (UpDown, E::Ulint),
+            StdFb::CtuWord => (Up, E::Word),
+            StdFb::CtdWord => (Down, E::Word),
+            StdFb::CtudWord => (UpDown, E::Word),
             _ => return None,
         })
     }
@@ -429,6 +448,18 @@ impl StdFb {
         ["LTON", "LTOF", "LTP"]
             .iter()
             .any(|n| n.eq_ignore_ascii_case(name))
+    }
+    /// The block a CODESYS or TwinCAT file means by this one: the WORD counters of CODESYS's
+    /// Standard and TwinCAT's Tc2_Standard library for `CTU`, `CTD`, `CTUD` (Beckhoff Infosys,
+    /// Tc2_Standard > CTU, CTD, CTUD: `PV : WORD`, `CV : WORD`; CODESYS online help, Standard
+    /// library > CTU likewise); any other block is itself (`CTU_INT` stays IEC's INT counter).
+    pub fn in_vendor_file(self) -> StdFb {
+        match self {
+            StdFb::Ctu => StdFb::CtuWord,
+            StdFb::Ctd => StdFb::CtdWord,
+            StdFb::Ctud => StdFb::CtudWord,
+            other => other,
+        }
     }
     /// Case-insensitive lookup; `CTU_INT` etc. map to the INT counters, `TON_TIME` etc. to the TIME
     /// timers, `LTON` etc. to the LTIME timers.

@@ -870,6 +870,9 @@ pub fn fb_params(fb: StdFb) -> &'static [FbParam] {
         StdFb::CtudLint => &const { ctud(E::Lint) },
         StdFb::CtudUdint => &const { ctud(E::Udint) },
         StdFb::CtudUlint => &const { ctud(E::Ulint) },
+        StdFb::CtuWord => &const { ctu(E::Word) },
+        StdFb::CtdWord => &const { ctd(E::Word) },
+        StdFb::CtudWord => &const { ctud(E::Word) },
     }
 }
 
@@ -932,14 +935,25 @@ pub fn fb_doc(fb: StdFb) -> &'static str {
         StdFb::TonLtime => "on-delay timer on LTIME: Q goes TRUE when IN has been TRUE for PT",
         StdFb::TofLtime => "off-delay timer on LTIME: Q stays TRUE for PT after IN goes FALSE",
         StdFb::TpLtime => "pulse timer on LTIME: Q is TRUE for PT from a rising edge of IN",
-        StdFb::Ctu | StdFb::CtuDint | StdFb::CtuLint | StdFb::CtuUdint | StdFb::CtuUlint => {
-            "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets"
-        }
-        StdFb::Ctd | StdFb::CtdDint | StdFb::CtdLint | StdFb::CtdUdint | StdFb::CtdUlint => {
+        StdFb::Ctu
+        | StdFb::CtuDint
+        | StdFb::CtuLint
+        | StdFb::CtuUdint
+        | StdFb::CtuUlint
+        | StdFb::CtuWord => "up counter: CV counts rising edges of CU, Q := CV >= PV, R resets",
+        StdFb::Ctd
+        | StdFb::CtdDint
+        | StdFb::CtdLint
+        | StdFb::CtdUdint
+        | StdFb::CtdUlint
+        | StdFb::CtdWord => {
             "down counter: CV counts down on rising edges of CD, Q := CV <= 0, LD loads PV"
         }
-        StdFb::Ctud | StdFb::CtudDint | StdFb::CtudLint | StdFb::CtudUdint | StdFb::CtudUlint => {
-            "up/down counter: QU := CV >= PV, QD := CV <= 0"
-        }
+        StdFb::Ctud
+        | StdFb::CtudDint
+        | StdFb::CtudLint
+        | StdFb::CtudUdint
+        | StdFb::CtudUlint
+        | StdFb::CtudWord => "up/down counter: QU := CV >= PV, QD := CV <= 0",
     }
 }

@@ -15,6 +15,7 @@ use crate::{FileId, Span};
 use diagnostics::{code, Diagnostic, Diagnostics, Severity};
 use std::ops::Range;
 
+pub use super::list_bounds::library_qualified_bound;
 use super::qualifiers::library_qualifiers;
 pub use super::qualifiers::PROVIDED_LIBRARIES;
 use super::refs::RefTypes;
@@ -282,6 +283,8 @@ pub(super) fn is_var_keyword(w: &str) -> bool {
             | "VAR_CONFIG"
             | "VAR_INST"
             | "VAR_STAT"
+            // TwinCAT's generic constants (`generic_constants`: E1081, read as VAR)
+            | "VAR_GENERIC"
     )
 }
 
@@ -532,38 +535,48 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                 if header_semi.is_some() {
                     i += 1;
                 }
-                let heritage_start = toks.get(i).map(|t| t.range.start);
+                // the EXTENDS / IMPLEMENTS clause after the name, or after the block of generic
+                // constants, where TwinCAT writes it (`FUNCTION_BLOCK Trace VAR_GENERIC CONSTANT
+                // ... END_VAR IMPLEMENTS I_Trace`, read as a VAR block: `generic_constants`)
+                let clause = |i: usize| {
+                    toks.get(i).is_some_and(|t| {
+                        ["EXTENDS", "IMPLEMENTS"].iter().any(|k| is_word(src, t, k))
+                    })
+                };
                 let mut heritage = None;
-                while i < n
-                    && ["EXTENDS", "IMPLEMENTS"]
-                        .iter()
-                        .any(|k| is_word(src, &toks[i], k))
-                {
-                    // names, also qualified by a library's namespace (`TcUnit.FB_TestSuite`)
-                    let name_end = |mut i: usize| {
-                        while toks.get(i).is_some_and(|t| t.tok == Tok::Dot)
-                            && toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident)
-                        {
-                            i += 2;
-                        }
-                        i
-                    };
-                    i = name_end(i + 2);
-                    while toks.get(i).is_some_and(|t| t.tok == Tok::Comma) {
+                let mut body_start = 0;
+                for _ in 0..2 {
+                    let heritage_start = toks.get(i).map(|t| t.range.start);
+                    while i < n && clause(i) {
+                        // names, also qualified by a library's namespace (`TcUnit.FB_TestSuite`)
+                        let name_end = |mut i: usize| {
+                            while toks.get(i).is_some_and(|t| t.tok == Tok::Dot)
+                                && toks.get(i + 1).is_some_and(|t| t.tok == Tok::Ident)
+                            {
+                                i += 2;
+                            }
+                            i
+                        };
                         i = name_end(i + 2);
+                        while toks.get(i).is_some_and(|t| t.tok == Tok::Comma) {
+                            i = name_end(i + 2);
+                        }
+                        // `IMPLEMENTS I_HMI;` (TwinCAT accepts the `;`): part of the clause
+                        if toks.get(i).is_some_and(|t| t.tok == Tok::Semi) {
+                            i += 1;
+                        }
+                        heritage = heritage_start
+                            .zip(toks.get(i.min(n) - 1))
+                            .map(|(s, t)| s..t.range.end);
                     }
-                    // `IMPLEMENTS I_HMI;` (TwinCAT accepts the `;`): part of the clause
-                    if toks.get(i).is_some_and(|t| t.tok == Tok::Semi) {
-                        i += 1;
-                    }
-                    heritage = heritage_start
-                        .zip(toks.get(i.min(n) - 1))
-                        .map(|(s, t)| s..t.range.end);
-                }
-                let mut body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
-                while i < n && is_var_keyword(&word(src, &toks[i]).to_ascii_uppercase()) {
-                    i = skip_to(i + 1, "END_VAR");
                     body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
+                    while i < n && is_var_keyword(&word(src, &toks[i]).to_ascii_uppercase()) {
+                        i = skip_to(i + 1, "END_VAR");
+                        body_start = toks.get(i.saturating_sub(1)).map_or(0, |t| t.range.end);
+                    }
+                    if heritage.is_some() || !clause(i) {
+                        break;
+                    }
                 }
                 let first = i.min(n - 1);
                 let mut j = i;
@@ -1661,6 +1674,17 @@ fn parse_text_as_read(
     let mut keyword_fields = Vec::new();
     let (uninstanced, unextended, unstatic): (String, String, String);
     let mut stat_at = Vec::new();
+    // `VAR_GENERIC CONSTANT` and `fb : FB_X<10>;`: one E1081 each, read as `VAR CONSTANT` and
+    // a plain instance (`generic_constants`)
+    let ungeneric;
+    let src = match super::generic_constants::generic_constants(file, src, &toks, diags) {
+        Some(t) => {
+            ungeneric = t;
+            (toks, problems) = lex(&ungeneric);
+            ungeneric.as_str()
+        }
+        None => src,
+    };
     // `ARRAY[1..GVL.N]` in ST and IL declarations: the list's name blanked (`list_bounds`)
     let blanked_lists = super::list_bounds::unqualify_list_bounds(src, &toks);
     let lists_blanked = blanked_lists.is_some();

@@ -8,7 +8,10 @@
 //! declaration grammar has no qualified names there; once blanked, the constant is looked up by its
 //! name among the integer constants of the file and then of every file given with it (E0022 when
 //! none declares it), as TwinCAT objects' bounds are. Invariant: positions unchanged (the qualifier
-//! becomes blanks), so every span stays where the user wrote it.
+//! becomes blanks), so every span stays where the user wrote it. That E0022 names the constant as
+//! written ([`name_qualifier`]; [`library_qualified_bound`] once the project is read, against the
+//! file's own text), and a constant of a library's parameter list (`Lib.Params.n`) is E1032 naming
+//! the library.
 
 use super::file::word;
 use super::lexer::{Tok, Token};
@@ -167,4 +170,64 @@ pub(super) fn name_qualifier(d: &mut diagnostics::Diagnostic, src: &str) {
             d.message.insert_str(at, &format!("{list}."));
         }
     }
+}
+
+/// E0022 `d` about a bound's constant, read against the file's text as the user wrote it
+/// (`original`: a TwinCAT object's list qualifiers are blanked before the text is parsed, so
+/// [`name_qualifier`] could not see them): the list named as in [`name_qualifier`], and a constant
+/// qualified by a library's namespace and its parameter list
+/// (`ARRAY[1..Tc3_XPlanarStandard.Params_XPlanar.moverCount]`, as TwinCAT names a library's
+/// parameters) made the E1032 that the same qualifier gets in a type: the library is not in the
+/// project, which is the cause, not the order of the declarations.
+pub fn library_qualified_bound(d: &mut diagnostics::Diagnostic, original: &str) {
+    if d.code != diagnostics::code::E0022 {
+        return;
+    }
+    name_qualifier(d, original);
+    let Some(span) = d.span else {
+        return;
+    };
+    let b = original.as_bytes();
+    let ident = |c: u8| c.is_ascii_alphanumeric() || c == b'_';
+    // the names before the constant, each followed by a dot: `lib.list.` (nearest first)
+    let mut names: Vec<std::ops::Range<usize>> = Vec::new();
+    let (start, end) = (span.start as usize, span.end as usize);
+    let mut at = start;
+    while names.len() < 2
+        && at >= 2
+        && b.get(at - 1) == Some(&b'.')
+        && b.get(at - 2).is_some_and(|c| ident(*c))
+    {
+        let dot = at - 1;
+        let mut first = dot;
+        while first > 0 && ident(b[first - 1]) {
+            first -= 1;
+        }
+        names.push(first..dot);
+        at = first;
+    }
+    let [list_at, lib_at] = names.as_slice() else {
+        return;
+    };
+    let (Some(list), Some(lib), Some(name)) = (
+        original.get(list_at.clone()),
+        original.get(lib_at.clone()),
+        original.get(start..end),
+    ) else {
+        return;
+    };
+    if lib.as_bytes().first().is_some_and(|c| c.is_ascii_digit()) {
+        return;
+    }
+    let hint = format!(
+        "`{list}.{name}` is a parameter of the library `{lib}`, whose POUs, types and parameter lists are not in the project: give its source project with --lib, or declare `{name}` in a global constant list of the project"
+    );
+    let mut e = diagnostics::Diagnostic::error(
+        diagnostics::code::E1032,
+        format!("`{lib}` in the bound `{lib}.{list}.{name}` is neither a global variable list nor a library ladderc provides"),
+    )
+    .at(crate::Span::new(span.file, lib_at.start, lib_at.end))
+    .with_primary_label("library qualifier")
+    .with_hint(hint);
+    std::mem::swap(d, &mut e);
 }

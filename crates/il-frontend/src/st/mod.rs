@@ -22,6 +22,7 @@ mod conflict_markers;
 pub mod fb_init;
 pub mod fb_init_args;
 pub mod file;
+mod generic_constants;
 mod generic_headers;
 mod hash_directives;
 pub mod implicit_enums;
