@@ -243,7 +243,7 @@ fn reference_and_pointer_declarations_compile_and_run() {
     let (trace, stderr) = common::run_traced(&f, 1, "main.x");
     assert_eq!(common::column(&trace, "main.x"), [6.0], "{trace}");
     assert!(
-        stderr.contains("runtime: NULL reference dereferenced (first: rx^ in main"),
+        stderr.contains("runtime: NULL reference dereferenced (first: rx^.a in main"),
         "{stderr}"
     );
 }

@@ -242,9 +242,10 @@ impl Gen<'_> {
         let taken = inside.as_ref().map_or(0, |(_, _, n)| *n);
         let path = self.written(v, at + taken);
         // the hidden, always NULL reference a call through an unassigned interface variable reads
-        // (il_frontend::st::interface_vars): named by the variable, not by the hidden field
+        // (il_frontend::st::interface_vars): named by the variable, not by the hidden field nor the
+        // hidden fields read through it (`.__TAG`)
         let unassigned = cfmt!(".{}^", il_frontend::st::interface_vars::UNASSIGNED);
-        let what = match path.strip_suffix(unassigned.as_str()) {
+        let what = match path.find(unassigned.as_str()).map(|k| &path[..k]) {
             Some(itf) => cfmt!("a call through the unassigned interface {itf}"),
             None => match varlen_array(&v.base.name) {
                 // an `ARRAY [*]` in-out's element (il_frontend::st::varlen): named as written
