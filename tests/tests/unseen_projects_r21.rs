@@ -967,10 +967,8 @@ fn festo_exports_of_one_object_each_run_together() {
         let original = common::repo_root().join(format!(
             "tests/corpus/efranceschetti_festo-codesys-mcp_{f}.xml"
         ));
-        let (code, lines) = common::check_files(&[(
-            "export.xml",
-            &std::fs::read_to_string(&original).unwrap(),
-        )]);
+        let (code, lines) =
+            common::check_files(&[("export.xml", &std::fs::read_to_string(&original).unwrap())]);
         assert_eq!(code, Some(1), "{lines:?}");
         let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
         assert_eq!(errors.len(), 1, "{lines:?}");

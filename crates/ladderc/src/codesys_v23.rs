@@ -48,7 +48,7 @@ fn first_word(line: &str) -> (&str, &str) {
 }
 
 /// The lines of `text` with their byte offsets (the line without its line break).
-fn lines(text: &str) -> Vec<(usize, &str)> {
+pub(crate) fn lines(text: &str) -> Vec<(usize, &str)> {
     let mut out = Vec::new();
     let mut at = 0;
     for l in text.split_inclusive('\n') {

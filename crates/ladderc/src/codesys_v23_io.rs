@@ -199,16 +199,7 @@ fn quoted(s: &str) -> Option<(&str, usize)> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn lines(text: &str) -> Vec<(usize, &str)> {
-        let mut out = Vec::new();
-        let mut at = 0;
-        for l in text.split_inclusive('\n') {
-            out.push((at, l.trim_end_matches(['\n', '\r'])));
-            at += l.len();
-        }
-        out
-    }
+    use crate::codesys_v23::lines;
 
     #[test]
     fn channel_and_bit_names_with_their_places() {
