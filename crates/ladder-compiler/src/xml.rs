@@ -6,7 +6,7 @@
 //! Invariants: all offsets are byte offsets into the original text (BOM included); text segments keep
 //! their raw position so that bodies embedded in the XML can be mapped back (see [`Element::text`]).
 //! A malformed document yields the tree read so far plus the error position: the caller reports it
-//! (a start tag's attributes are checked by [`crate::xml_attrs`]).
+//! (a start tag's attributes are checked by `crate::xml_attrs`).
 //! Left out of the tree: empty `<relPosition>` and `<connectionPointOut>` elements, which nothing reads
 //! (see `unread`).
 //!
