@@ -13,7 +13,7 @@
 //! ([`rewrite`], before the statement is lowered), so `.pValue` is a bounded pointer to the
 //! argument's bytes (sema refuses, E0305, an argument with no address for the whole run, as `ADR`
 //! of it; a call of the block's own METHOD passes the address for the call only, so there a
-//! method's VAR or a VAR_TEMP may be given: [`address_for_one_call`]). A call may give any variable, element or field; an argument that is no variable (a
+//! method's VAR or a VAR_TEMP may be given: `address_for_one_call`). A call may give any variable, element or field; an argument that is no variable (a
 //! literal, an expression) is E1068, as is an argument outside the input's family (`ANY_NUM` given
 //! a BOOL). `In` read as a value (`ADR(In)`, `SIZEOF(In)`) is E1068 in the function.
 //!

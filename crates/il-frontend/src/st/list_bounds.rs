@@ -174,7 +174,7 @@ pub(super) fn name_qualifier(d: &mut diagnostics::Diagnostic, src: &str) {
 
 /// E0022 `d` about a bound's constant, read against the file's text as the user wrote it
 /// (`original`: a TwinCAT object's list qualifiers are blanked before the text is parsed, so
-/// [`name_qualifier`] could not see them): the list named as in [`name_qualifier`], and a constant
+/// `name_qualifier` could not see them): the list named as in `name_qualifier`, and a constant
 /// qualified by a library's namespace and its parameter list
 /// (`ARRAY[1..Tc3_XPlanarStandard.Params_XPlanar.moverCount]`, as TwinCAT names a library's
 /// parameters) made the E1032 that the same qualifier gets in a type: the library is not in the
