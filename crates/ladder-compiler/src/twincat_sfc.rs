@@ -15,17 +15,22 @@
 //! - `a6b08bd8-...`, `700a583f-...`, `a2621e18-...`: a step's entry, step (main) and exit action
 //!   (CODESYS's step actions, written `__ENTRY`/`__ACTIVE`/`__EXIT`, see
 //!   `il_frontend::st::sfc::VENDOR_QUALIFIERS`); `e174fc0d-...`: an IEC association's qualifier;
-//! - `23bdaa98-...`: a branch is parallel (TRUE: not read);
+//! - `23bdaa98-...`: a branch is parallel (`TRUE`);
 //! - a segment is a sequence; a branch holds segments side by side: an alternative branch when
 //!   each segment begins with a transition (after a step); sequences that end with steps share
-//!   the transition after the branch (one per step); a macro is its segment, in place.
+//!   the transition after the branch (one per step); a parallel branch (after a transition) when
+//!   each segment begins with a step: the transition before it activates the first step of each
+//!   (`TO (a, b)`), and the transition after it leaves the last steps of all at once
+//!   (`FROM (x, y)`, IEC 61131-3 2.6.3 simultaneous divergence and convergence); a macro is its
+//!   segment, in place.
 //!
 //! The archive carries its own table of attribute names (`SFCAttributeDescription`: GUID ->
 //! `Identifier`, `MainAction`, `InitStep` ...): each GUID above must have the name ladderc reads it
 //! as, and an attribute ladderc does not read is named by it in the error.
 //!
 //! Invariants: never guesses: any other attribute whose value is not its default, an embedded
-//! (unnamed) action or transition, a parallel branch, a timed qualifier (its duration's attribute
+//! (unnamed) action or transition, a parallel branch's sequence that does not end with one step, a
+//! timed qualifier (its duration's attribute
 //! is not known), an element out of sequence or a jump to no step is one located E0321 naming it.
 
 use crate::twincat_nwl::{NwlBody, Tok};
@@ -61,10 +66,12 @@ struct StepOut {
     actions: Vec<(String, String)>,
 }
 
-/// A transition of the chart: from one step to one step (alternative branches only).
+/// A transition of the chart: from one step, or from the last steps of a parallel branch's
+/// sequences (their simultaneous convergence), to one step, or to the first steps of a parallel
+/// branch's sequences (its simultaneous divergence).
 struct TransOut {
-    from: usize,
-    to: Option<usize>,
+    from: Vec<usize>,
+    to: Vec<usize>,
     /// The jump target when it ends in a jump (resolved once every step is known).
     jump: Option<(String, usize)>,
     cond: Vec<Tok>,
@@ -81,6 +88,9 @@ enum Open {
     Steps(Vec<usize>),
     /// After transitions (of one or more branches): the next step is where they lead.
     Trans(Vec<usize>),
+    /// After a parallel branch: the steps that end its sequences; the next transition leaves them
+    /// all at once (IEC 61131-3 2.6.3, simultaneous convergence).
+    Parallel(Vec<usize>),
     /// After a jump: the sequence ends.
     Closed,
 }
@@ -197,7 +207,7 @@ pub(crate) fn lower(
                     .with_hint("jump to the name of a step of the same chart"),
                 ));
             };
-            r.trans[k].to = Some(s);
+            r.trans[k].to = vec![s];
         }
     }
     let mut body = r.text();
@@ -588,7 +598,7 @@ impl Reader<'_> {
                     Open::Start => {}
                     Open::Trans(ts) => {
                         for t in ts {
-                            self.trans[t].to = Some(k);
+                            self.trans[t].to.push(k);
                         }
                     }
                     _ => {
@@ -607,16 +617,19 @@ impl Reader<'_> {
             "SFCTransition" => {
                 let attrs = self.known_attributes(o, "transition", &[NAME])?;
                 self.no_embedded(o, "transition")?;
-                let Open::Steps(from) = open else {
-                    return Err(self.err(
-                        at,
-                        "a transition that does not follow a step (a parallel branch or two transitions \
-                         in a row)"
-                            .into(),
-                        "ladderc reads alternative branches of TwinCAT charts; export the POU as \
-                         PLCopen XML for parallel ones",
-                    ));
-                };
+                // after a step, or after the steps ending an alternative branch: one transition
+                // from each (CODESYS merges them); after a parallel branch: one from them all
+                let from: Vec<Vec<usize>> =
+                    match open {
+                        Open::Steps(from) => from.into_iter().map(|s| vec![s]).collect(),
+                        Open::Parallel(from) => vec![from],
+                        _ => return Err(self.err(
+                            at,
+                            "a transition that does not follow a step (two transitions in a row)"
+                                .into(),
+                            "put a step between two transitions",
+                        )),
+                    };
                 let cond = attrs.iter().find(|a| a.guid == NAME);
                 let (text, cat) = cond
                     .map(|a| (a.value.clone(), a.at))
@@ -626,7 +639,7 @@ impl Reader<'_> {
                 for from in from {
                     self.trans.push(TransOut {
                         from,
-                        to: None,
+                        to: Vec::new(),
                         jump: None,
                         cond: cond.clone(),
                         at,
@@ -667,15 +680,21 @@ impl Reader<'_> {
                 self.segment(seg, open)
             }
             "SFCBranch" => {
-                self.known_attributes(o, "branch", &[NAME])?;
+                let attrs = self.known_attributes(o, "branch", &[NAME, PARALLEL])?;
                 let segments = inner(o);
+                if attrs
+                    .iter()
+                    .any(|a| a.guid == PARALLEL && a.value.trim().eq_ignore_ascii_case("TRUE"))
+                {
+                    return self.parallel(at, &segments, open);
+                }
                 let Open::Steps(ref before) = open else {
                     return Err(self.err(
                         at,
-                        "a parallel branch (a branch after a transition), which ladderc does not \
-                         read in a TwinCAT chart"
+                        "an alternative branch that does not follow a step (a branch after a \
+                         transition is parallel in TwinCAT)"
                             .into(),
-                        "export the POU as PLCopen XML: ladderc reads parallel branches there",
+                        "put the branch after a step, or make it parallel",
                     ));
                 };
                 if before.len() != 1 {
@@ -727,6 +746,56 @@ impl Reader<'_> {
                 "export the POU as PLCopen XML",
             )),
         }
+    }
+
+    /// A parallel branch (IEC 61131-3 2.6.3, simultaneous divergence): after a transition, each
+    /// sequence begins with a step that the transition activates, and ends with a step; the
+    /// transition after the branch leaves the last steps of all sequences at once (simultaneous
+    /// convergence). A sequence that ends in a jump or a transition is an error: its steps would
+    /// never all be active for the convergence.
+    fn parallel(&mut self, at: usize, segments: &[(&Element, &str)], open: Open) -> Res<Open> {
+        let Open::Trans(before) = open else {
+            return Err(self.err(
+                at,
+                "a parallel branch that does not follow a transition".into(),
+                "a parallel branch begins after the transition that activates its sequences",
+            ));
+        };
+        let mut ends = Vec::new();
+        for (seg, _) in segments {
+            let first = inner(seg).first().map_or("", |e| e.1);
+            if first != "SFCStep" {
+                return Err(self.err(
+                    seg.tag_start(),
+                    format!(
+                        "a parallel branch whose sequence begins with {} (each sequence of a \
+                         parallel branch begins with a step)",
+                        if first.is_empty() { "nothing" } else { first }
+                    ),
+                    "begin the sequence with a step",
+                ));
+            }
+            match self.segment(seg, Open::Trans(before.clone()))? {
+                Open::Steps(ss) if ss.len() == 1 => ends.extend(ss),
+                Open::Parallel(ss) => ends.extend(ss),
+                _ => return Err(self.err(
+                    seg.tag_start(),
+                    "a sequence of a parallel branch that does not end with one step (it ends \
+                         in a jump, a transition, or an alternative branch's steps)"
+                        .into(),
+                    "end each sequence of a parallel branch with one step: the transition after \
+                         the branch leaves them all at once",
+                )),
+            }
+        }
+        if ends.is_empty() {
+            return Err(self.err(
+                at,
+                "a parallel branch without sequences".into(),
+                "check the file",
+            ));
+        }
+        Ok(Open::Parallel(ends))
     }
 
     /// The tokens of a transition condition: the ST expression (a trailing `;` dropped), or the ST
@@ -807,12 +876,11 @@ impl Reader<'_> {
                 push("END_STEP", at);
             } else {
                 let t = &self.trans[k];
-                let to = t.to.map_or("?", |s| self.steps[s].name.as_str());
                 push("TRANSITION", at);
                 push("FROM", at);
-                push(&self.steps[t.from].name, at);
+                self.step_list(&t.from, at, &mut push);
                 push("TO", at);
-                push(to, at);
+                self.step_list(&t.to, at, &mut push);
                 push(":=", at);
                 for w in &t.cond {
                     push(&w.text, w.at);
@@ -825,6 +893,26 @@ impl Reader<'_> {
             what: self.what.to_string(),
             temps: Vec::new(),
             toks,
+        }
+    }
+}
+
+impl Reader<'_> {
+    /// The steps a transition leaves or activates: one name, or `(a, b)` for several.
+    fn step_list(&self, steps: &[usize], at: usize, push: &mut impl FnMut(&str, usize)) {
+        match steps {
+            [] => push("?", at),
+            [one] => push(&self.steps[*one].name, at),
+            many => {
+                push("(", at);
+                for (k, s) in many.iter().enumerate() {
+                    if k > 0 {
+                        push(",", at);
+                    }
+                    push(&self.steps[*s].name, at);
+                }
+                push(")", at);
+            }
         }
     }
 }
