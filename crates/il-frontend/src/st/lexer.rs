@@ -648,7 +648,9 @@ pub enum PragmaKind {
 pub fn is_redundancy_pragma(text: &str) -> bool {
     let inner = text.trim_start_matches('{').trim_end_matches('}').trim();
     inner.len() > 7
-        && inner[..7].eq_ignore_ascii_case("REDUND_")
+        && inner
+            .get(..7)
+            .is_some_and(|head| head.eq_ignore_ascii_case("REDUND_"))
         && inner.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
