@@ -518,3 +518,109 @@ fn openplc_tutorial_xor_and_xnor_ld_follows_both_truth_tables() {
          0,0,0,0,0,1\n1,20,0,1,1,0\n2,40,1,0,1,0\n3,60,1,1,0,1\n"
     );
 }
+
+const TANK_STATION: &str = "azizhamoudam-code_plc-tank-filling-station_";
+
+#[test]
+fn codesys_tank_filling_station_runs_its_batch_faults_and_resets() {
+    // azizhamoudam-code/plc-tank-filling-station (MIT, round 30): a CODESYS V3.5 project kept as
+    // four `.st` files (a strict, qualified-only enumeration, the controller block, a plant
+    // simulation, PLC_PRG), run together at the project's 100 ms. Worked out from the source:
+    // the simulation's TON (`IN := NOT Q`, 100 ms) ticks in cycles 3k+1, +1 % per tick while
+    // filling and -1.5 % while draining; Start at 2 -> FILLING at 2, inlet from 3, 80 % at 241;
+    // MIXING at 242, mixer 243-342 (TON 10 s from 242, seen by the CASE one scan later);
+    // DRAINING at 343, drain from 344, 9.5 % at 484 -> COMPLETE at 485; Reset at 500 -> IDLE;
+    // E-stop 520-524 -> FAULT with code 3 at 520; a Reset at 522 while the E-stop is held keeps
+    // it FAULT (the project's own test case 5); Reset at 530 after the release -> IDLE, code 0
+    // (test case 6)
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n2,PLC_PRG.xStart,1\n3,PLC_PRG.xStart,0\n500,PLC_PRG.xReset,1\n\
+         501,PLC_PRG.xReset,0\n520,PLC_PRG.xEmergencyStop,1\n522,PLC_PRG.xReset,1\n\
+         523,PLC_PRG.xReset,0\n525,PLC_PRG.xEmergencyStop,0\n530,PLC_PRG.xReset,1\n\
+         531,PLC_PRG.xReset,0\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .arg("run")
+        .args(
+            [
+                "E_TankState",
+                "FB_TankController",
+                "FB_TankSimulation",
+                "PLC_PRG",
+            ]
+            .map(|f| file(&format!("{TANK_STATION}{f}.st"))),
+        )
+        .args([
+            "--cycles",
+            "540",
+            "--cycle-ms",
+            "100",
+            "--sanitize",
+            "--trace",
+            "-",
+        ])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args([
+            "--watch",
+            "PLC_PRG.fbTank.eState,PLC_PRG.fbTank.xInletValve,PLC_PRG.fbTank.xMixer,\
+             PLC_PRG.fbTank.xDrainValve,PLC_PRG.fbTank.nErrorCode,PLC_PRG.fbTank.xFault,\
+             PLC_PRG.fbSimulation.fLevelPercent",
+        ])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(!err.contains("runtime error"), "{err}");
+    let trace = String::from_utf8_lossy(&out.stdout);
+    let rows: Vec<Vec<&str>> = trace
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').collect())
+        .collect();
+    assert_eq!(rows.len(), 540);
+    // the cycles where the state or an output changes: cycle, eState, inlet, mixer, drain,
+    // error code, fault
+    let mut last = Vec::new();
+    let mut changes = Vec::new();
+    for r in &rows {
+        let key = r[2..8].to_vec();
+        if key != last {
+            changes.push(format!("{},{}", r[0], key.join(",")));
+            last = key;
+        }
+    }
+    assert_eq!(
+        changes,
+        [
+            "0,0,0,0,0,0,0",
+            "2,1,0,0,0,0,0",
+            "3,1,1,0,0,0,0",
+            "242,2,0,0,0,0,0",
+            "243,2,0,1,0,0,0",
+            "343,3,0,0,0,0,0",
+            "344,3,0,0,1,0,0",
+            "485,4,0,0,0,0,0",
+            "500,0,0,0,0,0,0",
+            "520,5,0,0,0,3,1",
+            "530,0,0,0,0,0,0",
+        ]
+    );
+    let level = |cycle: usize| rows[cycle][8];
+    assert_eq!(
+        [
+            level(3),
+            level(4),
+            level(7),
+            level(241),
+            level(346),
+            level(484),
+            level(539)
+        ],
+        ["0", "1", "2", "80", "78.5", "9.5", "9.5"]
+    );
+}
