@@ -624,3 +624,50 @@ fn codesys_tank_filling_station_runs_its_batch_faults_and_resets() {
         ["0", "1", "2", "80", "78.5", "9.5", "9.5"]
     );
 }
+
+#[test]
+fn codesys_ld_start_stop_latch_and_on_delay_run() {
+    // AlejandroCMed/codesys-plc-fundamentals (MIT, round 30), a CODESYS V3.5 SP22 LD export
+    // without positions, at its task's 20 ms: rung 1 latches xOrdenMarcha (xMarcha OR
+    // xOrdenMarcha, AND NOT xParo); rung 2 runs TON_Retardo (PT T#5S) on xOrdenMarcha and drives
+    // xMotor from its Q AND NOT xParo. Start at cycle 5 (100 ms): the latch at 5, the TON's 5 s
+    // elapse at 5100 ms, cycle 255; the stop at 400 clears the latch, the timer and the motor.
+    let dir = tempfile::tempdir().unwrap();
+    let stim = dir.path().join("stim.csv");
+    std::fs::write(
+        &stim,
+        "cycle,variable,value\n5,PLC_PRG.xMarcha,1\n6,PLC_PRG.xMarcha,0\n400,PLC_PRG.xParo,1\n\
+         401,PLC_PRG.xParo,0\n",
+    )
+    .unwrap();
+    let out = ladderc()
+        .arg("run")
+        .arg(file(
+            "AlejandroCMed_codesys-plc-fundamentals_04_MarchaParo_TON.xml",
+        ))
+        .args(["--cycles", "410", "--sanitize", "--trace", "-"])
+        .arg("--stimulus")
+        .arg(&stim)
+        .args(["--watch", "PLC_PRG.xOrdenMarcha,PLC_PRG.xMotor"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    let trace = String::from_utf8_lossy(&out.stdout);
+    // the rows where the latch or the motor changes (the task's 20 ms is the cycle)
+    let mut last = String::new();
+    let changes: Vec<&str> = trace
+        .lines()
+        .skip(1)
+        .filter(|l| {
+            let key = l.splitn(3, ',').nth(2).unwrap_or("").to_string();
+            let changed = key != last;
+            last = key;
+            changed
+        })
+        .collect();
+    assert_eq!(
+        changes,
+        ["0,0,0,0", "5,100,1,0", "255,5100,1,1", "400,8000,0,0"]
+    );
+}
