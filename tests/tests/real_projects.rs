@@ -645,7 +645,15 @@ fn codesys_ld_start_stop_latch_and_on_delay_run() {
         .arg(file(
             "AlejandroCMed_codesys-plc-fundamentals_04_MarchaParo_TON.xml",
         ))
-        .args(["--cycles", "410", "--sanitize", "--trace", "-"])
+        .args([
+            "--cycles",
+            "410",
+            "--cycle-ms",
+            "20",
+            "--sanitize",
+            "--trace",
+            "-",
+        ])
         .arg("--stimulus")
         .arg(&stim)
         .args(["--watch", "PLC_PRG.xOrdenMarcha,PLC_PRG.xMotor"])
@@ -654,7 +662,7 @@ fn codesys_ld_start_stop_latch_and_on_delay_run() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(0), "{err}");
     let trace = String::from_utf8_lossy(&out.stdout);
-    // the rows where the latch or the motor changes (the task's 20 ms is the cycle)
+    // the rows where the latch or the motor changes (one scan per cycle of the task's 20 ms)
     let mut last = String::new();
     let changes: Vec<&str> = trace
         .lines()
