@@ -45,6 +45,25 @@ pub struct Linked {
     linked: Vec<(String, String)>,
 }
 
+impl Linked {
+    /// The METHODs (and property accessors) that [`link`] did not link into their POU, with the
+    /// upper-case name of their POU: those [`with_uncalled`] links for a check only. A pass that
+    /// reads vendor spellings in the POUs' bodies before the check reads these bodies too, so
+    /// that a call in a METHOD gets the diagnostics it gets in a body.
+    pub fn uncalled_methods_mut(&mut self) -> impl Iterator<Item = (&str, &mut Action)> {
+        let Linked { actions, linked } = self;
+        let linked = &*linked;
+        actions.iter_mut().flat_map(move |(pou, list)| {
+            list.iter_mut()
+                .filter(move |a| {
+                    a.method_inputs.is_some()
+                        && !linked.iter().any(|(p, n)| p == pou && *n == a.name.key())
+                })
+                .map(move |a| (pou.as_str(), a))
+        })
+    }
+}
+
 /// Links the calls of actions from other POUs and drops every [`LibraryElement::Action`] of
 /// `units` (see the module documentation); returns what it read for [`with_uncalled`].
 pub fn link(units: &mut [CompilationUnit], diags: &mut Diagnostics) -> Linked {

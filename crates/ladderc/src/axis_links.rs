@@ -7,12 +7,17 @@
 //! `AxisNo` of the axis it is linked to; the configuration's `declared_by_program` set for the
 //! axes whose global the program declares itself; one located E1056 per declaration whose
 //! `AXIS_REF`s have no axis, one E1057 per `"link"` that names no `AXIS_REF` of the program.
-//! Invariants: two instances are never silently the same axis; only `VAR` and `VAR_GLOBAL`
-//! variables are instances (`VAR_IN_OUT`, `VAR_EXTERNAL`, references and pointers name one, a
-//! `VAR_INPUT` or `VAR_OUTPUT` is a copy); an instance whose declaration
+//! Invariants: two instances are never silently the same axis; only `VAR`, `VAR_GLOBAL` and
+//! `VAR_OUTPUT` variables are instances (`VAR_IN_OUT`, `VAR_EXTERNAL`, references and pointers
+//! name one, a `VAR_INPUT` is a copy its caller writes; a function block's or program's
+//! `VAR_OUTPUT` is storage of the instance that only the block writes, as Beckhoff's XTS sample
+//! `Mover` declares `AxisReference : AXIS_REF` "left as output so the link can be made
+//! directly"); an instance whose declaration
 //! already gives `AxisNo` keeps it, one located `AT` an address takes it from the I/O (as
 //! Beremiz's EtherCAT motion does); an `AXIS_REF` whose name no body of the program uses (a field
-//! of an HMI structure that only mirrors an axis) is no axis and needs no link.
+//! of an HMI structure that only mirrors an axis) is no axis unless a `"link"` names it: it needs
+//! no link (no E1056), but a link to it is valid (TwinCAT's System Manager links a declared
+//! `AXIS_REF` before any logic reads it), and it then is that axis.
 //!
 //! The link, as TwinCAT's System Manager keeps it for an NC axis, is one of (in this order):
 //! the axis's `"link"` key, the instance path (`GVL_Axes.Axis1`, `Axis1` for a global,
@@ -48,6 +53,9 @@ enum Shape {
 struct Leaf {
     path: String,
     steps: Vec<Step>,
+    /// A body of the program names it: it needs an axis (E1056 without one). An unused one is an
+    /// axis only when a `"link"` names it.
+    used: bool,
 }
 
 #[derive(Clone)]
@@ -126,11 +134,13 @@ impl<'a> Types<'a> {
     }
 }
 
-/// Variables that are instances of their type: `VAR` and `VAR_GLOBAL` (a `VAR_INPUT` /
-/// `VAR_OUTPUT` `AXIS_REF` is a copy its caller or block writes, `VAR_IN_OUT` and `VAR_EXTERNAL`
-/// name another variable, `VAR_TEMP` lives for one call).
+/// Variables that are instances of their type: `VAR`, `VAR_GLOBAL` and `VAR_OUTPUT` (a
+/// function block's or program's output is static storage of its instance, readable from outside
+/// (IEC 61131-3 ed. 3, 6.5.2.2) and written only by the block; a `VAR_INPUT` `AXIS_REF` is a copy
+/// its caller writes at each call, `VAR_IN_OUT` and `VAR_EXTERNAL` name another variable,
+/// `VAR_TEMP` lives for one call).
 fn instance_kind(k: VarKind) -> bool {
-    matches!(k, VarKind::Local | VarKind::Global)
+    matches!(k, VarKind::Local | VarKind::Global | VarKind::Output)
 }
 
 /// How many `AXIS_REF`s a shape holds (saturating).
@@ -156,6 +166,7 @@ fn leaves(shape: &Shape, path: &str, steps: &mut Vec<Step>, out: &mut Vec<Leaf>)
         Shape::Axis => out.push(Leaf {
             path: path.to_string(),
             steps: steps.clone(),
+            used: false,
         }),
         Shape::Fields(fs) => {
             for (name, s) in fs {
@@ -329,11 +340,12 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
                         let mut out = Vec::new();
                         leaves(&shape, &prefixes[0], &mut Vec::new(), &mut out);
                         // an `AxisNo` written in the declaration is the user's own link; an
-                        // AXIS_REF the program never names is no axis (a structure's copy of one)
-                        out.retain(|l| {
-                            !gives_axis_no(var.init.as_ref(), &l.steps)
-                                && used.contains(&last_name(&l.path))
-                        });
+                        // AXIS_REF the program never names needs no axis (a structure's copy of
+                        // one), but a `"link"` may still name it
+                        out.retain(|l| !gives_axis_no(var.init.as_ref(), &l.steps));
+                        for l in out.iter_mut() {
+                            l.used = used.contains(&last_name(&l.path));
+                        }
                         if !out.is_empty() {
                             roots.push(Root {
                                 at: (u, i, b, v),
@@ -402,7 +414,11 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
     }
     // a global AXIS_REF named like an axis is that axis (the axes file then declares no global)
     for (r, root) in roots.iter().enumerate() {
-        if !root.global || root.leaves.len() != 1 || !root.leaves[0].steps.is_empty() {
+        if !root.global
+            || root.leaves.len() != 1
+            || !root.leaves[0].steps.is_empty()
+            || !root.leaves[0].used
+        {
             continue;
         }
         let Some(k) = axes
@@ -420,12 +436,16 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
     }
     // a program's own AXIS_REF named like an axis, when no other declaration has that name
     for (r, root) in roots.iter().enumerate() {
-        if root.global || root.leaves.len() != 1 || !root.leaves[0].steps.is_empty() {
+        if root.global
+            || root.leaves.len() != 1
+            || !root.leaves[0].steps.is_empty()
+            || !root.leaves[0].used
+        {
             continue;
         }
         let alone = roots
             .iter()
-            .filter(|o| o.name.key() == root.name.key())
+            .filter(|o| o.name.key() == root.name.key() && o.leaves.iter().any(|l| l.used))
             .count()
             == 1;
         let Some(k) = axes
@@ -440,9 +460,22 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
             taken[k] = true;
         }
     }
-    let all: usize = roots.iter().map(|r| r.leaves.len()).sum();
-    if axes.axes.len() == 1 && all == 1 && chosen.is_empty() && axes.axes[0].link.is_none() {
-        chosen.insert((0, 0), 0);
+    // one axis and one AXIS_REF the program uses: those two
+    let in_use: Vec<(usize, usize)> = roots
+        .iter()
+        .enumerate()
+        .flat_map(|(r, root)| {
+            root.leaves
+                .iter()
+                .enumerate()
+                .filter(|(_, l)| l.used)
+                .map(move |(l, _)| (r, l))
+        })
+        .collect();
+    if let [only] = in_use.as_slice() {
+        if axes.axes.len() == 1 && chosen.is_empty() && axes.axes[0].link.is_none() {
+            chosen.insert(*only, 0);
+        }
     }
     let free: Vec<&str> = axes
         .axes
@@ -453,7 +486,7 @@ pub fn link(units: &mut [CompilationUnit], axes: &mut AxisConfig, diags: &mut Di
         .collect();
     for (r, root) in roots.iter().enumerate() {
         let missing: Vec<&Leaf> = (0..root.leaves.len())
-            .filter(|l| !chosen.contains_key(&(r, *l)))
+            .filter(|l| root.leaves[*l].used && !chosen.contains_key(&(r, *l)))
             .map(|l| &root.leaves[l])
             .collect();
         if let Some(first) = missing.first() {

@@ -87,13 +87,18 @@ pub fn solution(session: &Session, inputs: &[PathBuf]) -> Option<PathBuf> {
         }
     };
     if has_ext(first, "plcproj") {
-        let mut dir = first.parent()?.to_path_buf();
+        // (`Cell/Cell.plcproj` given relative to the working folder: its folder, then `.`, then
+        // `..`; before, the search ended at the first empty parent and found no .tsproj)
+        let mut dir = match first.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+            _ => PathBuf::from("."),
+        };
         for _ in 0..4 {
             let found = in_dir(&dir);
             if !found.is_empty() {
                 return one(found);
             }
-            dir = dir.parent()?.to_path_buf();
+            dir = folder_above(&dir);
         }
         return None;
     }
@@ -116,6 +121,18 @@ pub fn solution(session: &Session, inputs: &[PathBuf]) -> Option<PathBuf> {
         }
     }
     None
+}
+
+/// The folder above `dir`, also of a relative one: `Cell` -> `.`, `.` -> `..`, `..` -> `../..`
+/// (a root stays itself).
+fn folder_above(dir: &Path) -> PathBuf {
+    use std::path::Component;
+    match (dir.components().next_back(), dir.parent()) {
+        (Some(Component::Normal(_)), Some(p)) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        (Some(Component::Normal(_)), _) => PathBuf::from("."),
+        (Some(Component::RootDir | Component::Prefix(_)), _) => dir.to_path_buf(),
+        _ => dir.join(".."),
+    }
 }
 
 /// The PLC project the inputs name (a `.plcproj`, or a folder, `.sln` or `.tsproj` whose folder

@@ -1348,6 +1348,14 @@ impl Session {
         if uses_blocks {
             crate::axis_links::link(&mut user, &mut axes, &mut self.diags);
             crate::tc2_mc2::read_spellings(&mut user, &library, &mut axes, &mut self.diags);
+            // (the METHODs nothing calls, checked on their own in `check_uncalled`)
+            crate::tc2_mc2::read_method_spellings(
+                &user,
+                self.linked_actions.uncalled_methods_mut(),
+                &library,
+                &mut axes,
+                &mut self.diags,
+            );
             crate::block_temps::keep(&mut user, &library);
             crate::motion_in_struct::report(&user, &library, &mut self.diags);
         }

@@ -4,8 +4,11 @@
 //! `Axis.ReadStatus()` (and `Axis();`, a call of the AXIS_REF block itself) a call of a hidden MC_ReadStatus instance, `Axis.Status.<field>` and
 //! `Axis.NcToPlc.<field>` reads of hidden MC_ReadStatus / MC_ReadActualPosition /
 //! MC_ReadActualVelocity instances that the body calls first in every scan; one located E1042
-//! per member with no counterpart. Invariants: only variables the POU declares as `AXIS_REF` are
-//! touched; the hidden names start with `__TC2_` (a user cannot write them).
+//! per member with no counterpart (a `Status.` / `NcToPlc.` field ladderc has no value for,
+//! `PlcToNc` and `ADS` with any member, `NcToPlc` / `Status` read whole), a store into one left
+//! out ([`no_store`]). Invariants: only variables the POU declares as `AXIS_REF` (or as
+//! structures, or function block instances with an `AXIS_REF` output, holding one:
+//! [`axis_holders`]) are touched; the hidden names start with `__TC2_` (a user cannot write them).
 //!
 //! Per Infosys (Tc2_MC2 > AXIS_REF, ST_AxisStatus, NCTOPLC_AXIS_REF): `NcToPlc` is updated by the
 //! NC every cycle, `Status` by `ReadStatus()`. Here both are refreshed at the start of the POU's
@@ -21,8 +24,9 @@
 
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{
-    Accessor, ArgDir, ArrayDim, CallArgs, Condition, FormalArg, Ident, IlStmt, InstrKind,
-    Instruction, Literal, LiteralKind, Op, Operand, Pou, TypeRef, VarDecl, VarRef,
+    Accessor, ArgDir, ArrayDim, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt,
+    InstrKind, Instruction, LibraryElement, Literal, LiteralKind, Op, Operand, Pou, PouKind,
+    TypeRef, VarDecl, VarKind, VarRef,
 };
 use il_frontend::Span;
 
@@ -233,6 +237,34 @@ pub const MAX_ARRAY_AXES: i128 = 64;
 
 /// The fields of the declared structures, by type key (as `tc2_mc2`'s `declared_types` gives them).
 pub type Structs = std::collections::HashMap<String, std::collections::HashMap<String, TypeRef>>;
+
+/// The types whose instances may hold an `AXIS_REF` another POU reads: the declared structures
+/// (`structs`) and the function blocks of `units` with their `VAR_OUTPUT`s (readable from
+/// outside, IEC 61131-3 ed. 3, 6.5.2.2: `GVL.Mover[i].AxisReference.Status.Moving` of Beckhoff's
+/// XTS sample, whose `Mover` block declares its axis as an output "so the link can be made
+/// directly"; [`crate::axis_links`] links it as any instance).
+pub fn axis_holders(units: &[CompilationUnit], structs: &Structs) -> Structs {
+    let mut out = structs.clone();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        let LibraryElement::Pou(p) = item else {
+            continue;
+        };
+        if p.kind != PouKind::FunctionBlock || out.contains_key(&p.name.key()) {
+            continue;
+        }
+        let outputs: std::collections::HashMap<String, TypeRef> = p
+            .var_blocks
+            .iter()
+            .filter(|b| b.kind == VarKind::Output)
+            .flat_map(|b| b.vars.iter())
+            .map(|v| (v.name.key(), v.ty.clone()))
+            .collect();
+        if !outputs.is_empty() {
+            out.insert(p.name.key(), outputs);
+        }
+    }
+    out
+}
 
 /// The `AXIS_REF`s inside `vars`: each variable of that type, each one-dimensional array of them,
 /// each field of a declared structure, nested up to four steps deep, with at most
@@ -597,13 +629,27 @@ fn moving(axis: &AxisPath, index: &[Operand]) -> Vec<IlStmt> {
 }
 
 fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagnostics) {
-    for s in body {
+    // the stores into a member without a counterpart (`Axis.PlcToNc.Override := x;`, E1042
+    // reported): left out, as a store leaves the current result as it is
+    let mut dropped = Vec::new();
+    let mut at = Vec::new();
+    for (k, s) in body.iter_mut().enumerate() {
         let IlStmt::Instr(i) = s else { continue };
         let mut replace = None;
         match &mut i.kind {
             InstrKind::Simple {
-                operand: Some(o), ..
-            } => operand(o, axes, used, diags),
+                op,
+                operand: Some(o),
+                ..
+            } => {
+                let was_var = matches!(o, Operand::Var(_));
+                operand(o, axes, used, diags);
+                if was_var && !matches!(o, Operand::Var(_)) && matches!(op, Op::St | Op::S | Op::R)
+                {
+                    dropped.push(k);
+                    at.push(i.span);
+                }
+            }
             InstrKind::Deferred {
                 operand: o, body, ..
             } => {
@@ -659,6 +705,19 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagno
             *s = r;
         }
     }
+    for (k, span) in dropped.into_iter().zip(at) {
+        body[k] = no_store(span);
+    }
+}
+
+/// What stands for a store left out after its error (E1041, E1042): a label of its own, which
+/// ends the current result's life as the store would, so that the value stored gets no follow-on
+/// "this result is never used" (W1001). Only a program with errors holds one: it is never compiled.
+pub(crate) fn no_store(at: Span) -> IlStmt {
+    IlStmt::Label(Ident::new(
+        format!("__TC2_NO_STORE_{}_{}", at.file.0, at.start),
+        at,
+    ))
 }
 
 fn operand(o: &mut Operand, axes: &Axes, used: &mut Used, diags: &mut Diagnostics) {
@@ -671,6 +730,19 @@ fn operand(o: &mut Operand, axes: &Axes, used: &mut Used, diags: &mut Diagnostic
                     kind,
                     type_prefix: None,
                     span: v.span,
+                });
+            }
+        }
+        // `SIZEOF(Axis.NcToPlc.ActPos)`: the size of the value the member reads; a member
+        // without a counterpart (E1042 reported, `SIZEOF(Axis.NcToPlc)`) is 0
+        Operand::SizeOf(s) => {
+            let without = member(&mut s.of, axes, used, diags).is_some();
+            let span = s.span;
+            if without {
+                *o = Operand::literal(Literal {
+                    kind: LiteralKind::Int(0),
+                    type_prefix: None,
+                    span,
                 });
             }
         }
@@ -701,6 +773,39 @@ fn member(
     axes.unqualify(&mut q);
     // the axis (`Axis`, `axisRefs[i]`, `GVL.axes[i].Axis`), its indexes, the members after it
     let (axis, index, rest) = axes.find(&q)?;
+    // Tc2_MC2's AXIS_REF is `PlcToNc` (PLCTONC_AXIS_REF), `NcToPlc` (NCTOPLC_AXIS_REF), `ADS`
+    // (ST_AdsAddress) and `Status` (ST_AxisStatus) (Infosys, Tc2_MC2 > Data types > AXIS_REF):
+    // the simulated axis has no value for `PlcToNc` (the PLC's requests to the NC: override,
+    // control word ...) and `ADS`, nor for `NcToPlc` / `Status` read whole (the structure's
+    // other members, its layout); each is one E1042, not E1021 "AXIS_REF has no field"
+    if let Some(Accessor::Field(g)) = rest.first() {
+        let k = g.key();
+        let whole = rest.len() == 1 && (k == "NCTOPLC" || k == "STATUS");
+        if k == "PLCTONC" || k == "ADS" || whole {
+            let written: Vec<&str> = rest
+                .iter()
+                .map_while(|a| match a {
+                    Accessor::Field(f) => Some(f.name.as_str()),
+                    _ => None,
+                })
+                .collect();
+            let mut d = e1042(&written.join("."), g.span);
+            if whole {
+                let example = if k == "STATUS" {
+                    "`Status.Moving`, `Status.Error`"
+                } else {
+                    "`NcToPlc.ActPos`, `NcToPlc.ActVelo`"
+                };
+                d = d.with_hint(format!(
+                    "ladderc's simulated axis has no `{}` structure to read whole: read its \
+                     members one by one ({example} ...; see `ladderc explain E1042`)",
+                    g.name
+                ));
+            }
+            diags.push(d);
+            return Some(LiteralKind::Int(0));
+        }
+    }
     // CODESYS SoftMotion's AXIS_REF_SM3 (ladderc's AXIS_REF, `tc2_mc2::sm3_axis_type`): its
     // members `fActPosition`, `fSetPosition`, `fActVelocity`, `fSetVelocity` (LREAL) and
     // `nAxisState` (SMC_AXIS_STATE), read from the simulated axis as NcToPlc's are; another

@@ -4,7 +4,9 @@
 //! same units with each call argument and instance field written in a Tc2_MC2 spelling renamed to the
 //! pin it stands for (`fbPower(Enable_Positive := TRUE)` -> `EnablePositive`), and one located E1041
 //! for each Tc2_MC2 pin the simulated axis has no counterpart for (the argument, or the store into
-//! the pin, is then dropped, so that no E1011, E1015 or E1006 follows it). Invariants: only instances of library blocks declared in the POU are
+//! the pin, is then dropped, so that no E1011, E1015 or E1006 follows it). The METHODs no POU
+//! calls, checked on their own, are read the same way ([`read_method_spellings`]), so that a call
+//! gets one diagnostic wherever it stands. Invariants: only instances of library blocks declared in the POU (or the METHOD) are
 //! touched; spans stay where the user wrote the names.
 //!
 //! Tc2_MC2 also lets a motion block's `Acceleration` and `Deceleration` be left out or 0: "the
@@ -93,7 +95,9 @@ pub fn read_spellings(
     // the declared types: the structures that hold an AXIS_REF, Tc2_MC2's UDINT ErrorID
     // (`tc2_error_id`)
     let (structs, global_types) = declared_types(units);
-    let globals = global_axes(units, &structs);
+    // (the structures and function blocks whose instances hold an AXIS_REF)
+    let holders = crate::tc2_axis_ref::axis_holders(units, &structs);
+    let globals = global_axes(units, &holders);
     for u in units.iter_mut() {
         for item in &mut u.items {
             // `eDir : MC_Direction := MC_Direction.MC_Shortest_Way;`
@@ -112,46 +116,136 @@ pub fn read_spellings(
             let LibraryElement::Pou(p) = item else {
                 continue;
             };
-            crate::tc2_axis_ref::read_members(p, &globals, &structs, diags);
-            let instances: HashMap<String, String> = p
-                .var_blocks
-                .iter()
-                .flat_map(|b| b.vars.iter())
-                // an instance, or an array of them (`aPower : ARRAY [1..2] OF MC_Power`, called
-                // `aPower[i](...)`)
-                .filter_map(|v| {
-                    param_passing::lower::instance_block(&v.ty, lib)
-                        .map(|(tpl, _)| (v.name.key(), tpl.block.clone()))
-                })
-                .collect();
-            if !instances.is_empty() {
-                let mut vars = global_types.clone();
-                vars.extend(
-                    p.var_blocks
-                        .iter()
-                        .flat_map(|b| b.vars.iter())
-                        .map(|v| (v.name.key(), v.ty.clone())),
-                );
-                let types = crate::tc2_error_id::Types {
-                    vars,
-                    structs: structs.clone(),
-                };
-                let cx = Cx {
-                    inst: &instances,
-                    lib,
-                    axes,
-                    tables: &tables,
-                    types: &types,
-                };
-                let mut hidden = Vec::new();
-                stmts(&mut p.body, &cx, &mut hidden, diags);
-                if !hidden.is_empty() {
-                    crate::block_temps::add_hidden_vars(p, hidden);
-                }
+            crate::tc2_axis_ref::read_members(p, &globals, &holders, diags);
+            let blocks: Vec<&il_frontend::ast::VarBlock> = p.var_blocks.iter().collect();
+            let hidden = read_body(
+                &blocks,
+                &mut p.body,
+                (&global_types, &structs),
+                lib,
+                axes,
+                &tables,
+                diags,
+            );
+            if !hidden.is_empty() {
+                crate::block_temps::add_hidden_vars(p, hidden);
             }
         }
     }
     axes.tc2_tables |= tables.get() || globals.homed_read.get();
+}
+
+/// The Tc2_MC2 spellings of one body whose variables are `blocks`: its pins renamed, one E1041
+/// per pin with no counterpart; returns the hidden variables the body now needs.
+fn read_body(
+    blocks: &[&il_frontend::ast::VarBlock],
+    body: &mut Vec<IlStmt>,
+    (global_types, structs): (&HashMap<String, TypeRef>, &crate::tc2_axis_ref::Structs),
+    lib: &Library,
+    axes: &AxisConfig,
+    tables: &std::cell::Cell<bool>,
+    diags: &mut Diagnostics,
+) -> Vec<VarDecl> {
+    let mut hidden = Vec::new();
+    let instances: HashMap<String, String> = blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        // an instance, or an array of them (`aPower : ARRAY [1..2] OF MC_Power`, called
+        // `aPower[i](...)`)
+        .filter_map(|v| {
+            param_passing::lower::instance_block(&v.ty, lib)
+                .map(|(tpl, _)| (v.name.key(), tpl.block.clone()))
+        })
+        .collect();
+    if instances.is_empty() {
+        return hidden;
+    }
+    let mut vars = global_types.clone();
+    vars.extend(
+        blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .map(|v| (v.name.key(), v.ty.clone())),
+    );
+    let types = crate::tc2_error_id::Types {
+        vars,
+        structs: structs.clone(),
+    };
+    let cx = Cx {
+        inst: &instances,
+        lib,
+        axes,
+        tables,
+        types: &types,
+    };
+    stmts(body, &cx, &mut hidden, diags);
+    hidden
+}
+
+/// The Tc2_MC2 spellings of the METHODs that no POU calls (`methods`: each with the upper-case
+/// name of its POU), which `Session::check_uncalled` checks on their own after [`read_spellings`]
+/// read the POUs' bodies: a call of a motion block in such a METHOD gets the diagnostics it gets
+/// in a body (`fbHalt(Options := o)` is E1041 in both, before: E1011 in the METHOD, issue #13
+/// round 30). Reads them with the POU's variables (its motion block instances) and the METHOD's
+/// own; the hidden variables they need are the METHOD's (it is checked, never compiled). Reports
+/// only what `diags` does not hold yet (a METHOD its own POU calls was read inlined there).
+pub fn read_method_spellings<'a>(
+    units: &[CompilationUnit],
+    methods: impl Iterator<Item = (&'a str, &'a mut il_frontend::ast::Action)>,
+    lib: &Library,
+    axes: &mut AxisConfig,
+    diags: &mut Diagnostics,
+) {
+    let tables = std::cell::Cell::new(false);
+    let (structs, global_types) = declared_types(units);
+    let mut found = Diagnostics::new();
+    for (pou, m) in methods {
+        let Some(owner) = units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .find_map(|i| match i {
+                LibraryElement::Pou(p) if p.name.key() == pou => Some(p),
+                _ => None,
+            })
+        else {
+            continue;
+        };
+        let blocks: Vec<&il_frontend::ast::VarBlock> =
+            owner.var_blocks.iter().chain(m.temps.iter()).collect();
+        let hidden = read_body(
+            &blocks,
+            &mut m.body,
+            (&global_types, &structs),
+            lib,
+            axes,
+            &tables,
+            &mut found,
+        );
+        if !hidden.is_empty() {
+            let span = m.name.span;
+            m.temps
+                .get_or_insert_with(|| il_frontend::ast::VarBlock {
+                    access: None,
+                    name: None,
+                    kind: il_frontend::ast::VarKind::Temp,
+                    constant: false,
+                    retain: false,
+                    vars: Vec::new(),
+                    span,
+                })
+                .vars
+                .extend(hidden);
+        }
+    }
+    for d in found.into_iter() {
+        let known = diags
+            .iter()
+            .any(|e| e.code == d.code && e.span == d.span && e.message == d.message);
+        if !known {
+            diags.push(d);
+        }
+    }
+    axes.tc2_tables |= tables.get();
 }
 
 /// What the walk over a POU's body knows.
@@ -437,6 +531,8 @@ fn stmts(body: &mut Vec<IlStmt>, cx: &Cx, hidden: &mut Vec<VarDecl>, diags: &mut
         }
         if !dropped.contains(&k) {
             body.push(s);
+        } else if let IlStmt::Instr(i) = &s {
+            body.push(crate::tc2_axis_ref::no_store(i.span));
         }
     }
     for (_, code) in after {
@@ -723,10 +819,11 @@ fn global_axes(
 pub fn read_axis_members(units: &mut [CompilationUnit], diags: &mut Diagnostics) {
     sm3_axis_type(units);
     let (structs, _) = declared_types(units);
-    let globals = global_axes(units, &structs);
+    let holders = crate::tc2_axis_ref::axis_holders(units, &structs);
+    let globals = global_axes(units, &holders);
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
         if let LibraryElement::Pou(p) = item {
-            crate::tc2_axis_ref::read_members(p, &globals, &structs, diags);
+            crate::tc2_axis_ref::read_members(p, &globals, &holders, diags);
         }
     }
 }
