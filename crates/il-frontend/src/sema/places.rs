@@ -247,6 +247,14 @@ impl Body<'_, '_> {
             );
             return;
         }
+        if let ReadOnly::Constant { decl } = ro {
+            if v.base.span == decl {
+                // written at its own declared name: its initial value, computed when the
+                // instance is initialised (`VAR_INPUT CONSTANT p : FB_X := (i := THIS^);`, an
+                // instance's parameter, `st::pou_inits`), not a write of the program
+                return;
+            }
+        }
         let (code, message, decl, hint): (Code, String, Option<(Span, &str)>, &str) = match ro {
             ReadOnly::Constant { decl } => (
                 code::E1014,

@@ -420,7 +420,7 @@ pub fn add_init_calls(
                 span: at,
             };
             let mut stmts = super::parse_statements_of(*file, text, *base, &reader, diags);
-            super::pou_inits::prefix_fields(&mut stmts, prefixed);
+            super::init_fields::prefix_fields(&mut stmts, prefixed);
             computed.extend(stmts);
         }
     }

@@ -191,7 +191,12 @@ pub struct PendingBody {
 /// of the declarations' length), the text's offset in the file, and the assignments of the
 /// computed fields of structured initial values with the instance to put before their targets
 /// (`pou_inits::prefix_fields`).
-pub type VarInits = (FileId, String, usize, Vec<(Range<usize>, String)>);
+pub type VarInits = (
+    FileId,
+    String,
+    usize,
+    Vec<(Range<usize>, super::init_fields::InitTarget)>,
+);
 
 impl PendingBody {
     /// A body with no text, no action, method or FB_init argument, at `name_start` of `file`
@@ -2493,9 +2498,25 @@ fn parse_text_as_read(
                     })
                     .flatten();
                 let var_inits: Vec<VarInits> = found
-                    .map(|(cut, inits, prefixed)| {
-                        // W1433 once per POU, at the first
-                        if let Some((name, value)) = cut.first() {
+                    .map(|found| {
+                        let super::pou_inits::Found {
+                            cut,
+                            inits,
+                            prefixed,
+                            unplaceable,
+                        } = found;
+                        for (name, at) in &unplaceable {
+                            diags.push(super::pou_inits::unplaceable_error(
+                                src.get(name.clone()).unwrap_or(""),
+                                Span::new(file, at.start, at.end),
+                            ));
+                        }
+                        // W1433 once per POU, at the first (of a value computed: not one left
+                        // out with its E1069)
+                        let placed = |(name, _): &&(Range<usize>, Range<usize>)| {
+                            !unplaceable.iter().any(|(n, _)| n == name)
+                        };
+                        if let Some((name, value)) = cut.iter().find(placed) {
                             diags.push(super::pou_inits::computed_warning(
                                 src.get(name.clone()).unwrap_or(""),
                                 Span::new(file, value.start, value.end),
@@ -2565,12 +2586,24 @@ fn parse_text_as_read(
     }
     outside.push(at..text.len());
     for region in outside {
-        let Some((cut, inits, prefixed)) =
-            super::pou_inits::global_run_time_inits(&text, region.clone(), &file_globals)
+        let Some(super::pou_inits::Found {
+            cut,
+            inits,
+            prefixed,
+            unplaceable,
+        }) = super::pou_inits::global_run_time_inits(&text, region.clone(), &file_globals)
         else {
             continue;
         };
-        if let (Some((name, value)), true) = (cut.first(), global_inits.is_empty()) {
+        for (name, at) in &unplaceable {
+            diags.push(super::pou_inits::unplaceable_error(
+                src.get(name.clone()).unwrap_or(""),
+                Span::new(file, at.start, at.end),
+            ));
+        }
+        let placed =
+            |(name, _): &&(Range<usize>, Range<usize>)| !unplaceable.iter().any(|(n, _)| n == name);
+        if let (Some((name, value)), true) = (cut.iter().find(placed), global_inits.is_empty()) {
             diags.push(super::pou_inits::computed_global_warning(
                 src.get(name.clone()).unwrap_or(""),
                 Span::new(file, value.start, value.end),
@@ -2951,7 +2984,7 @@ pub fn compile_pending(
                     .iter()
                     .flat_map(|(file, text, base, prefixed)| {
                         let mut stmts = super::parse_statements_of(*file, text, *base, p, diags);
-                        super::pou_inits::prefix_fields(&mut stmts, prefixed);
+                        super::init_fields::prefix_fields(&mut stmts, prefixed);
                         stmts
                     })
                     .collect();

@@ -121,7 +121,12 @@ pub(super) fn split(decls: &str) -> Option<Split> {
                         .iter()
                         .any(|w| word_at(t).eq_ignore_ascii_case(w))
             });
+        // an array initialiser (`[N(7)]`: `N` a constant repeat count, no call; `[F(1), 2]`)
+        // stays the declaration's, as in a POU's VAR (`super::pou_inits`): ST has no array
+        // value to assign
+        let array = value.first().is_some_and(|t| t.tok == Tok::LBracket);
         if single
+            && !array
             && (!structured || one_field)
             && (is_run_time_value(value) || this || read_name)
             && toks[end].tok == Tok::Semi
@@ -392,7 +397,17 @@ pub(super) fn declarations(decls: &str, toks: &[super::lexer::Token]) -> Vec<Dec
             Tok::Eof => break,
             _ if w == "END_VAR" => block = None,
             _ if super::file::is_var_keyword(&w) => {
-                let constant = k + 1 < toks.len() && word(k + 1).eq_ignore_ascii_case("CONSTANT");
+                // the block's qualifiers (`VAR_INPUT CONSTANT`, `VAR RETAIN`): the first
+                // declaration starts after them
+                let mut constant = false;
+                while k + 1 < toks.len()
+                    && ["CONSTANT", "RETAIN", "NON_RETAIN", "PERSISTENT"]
+                        .iter()
+                        .any(|q| word(k + 1).eq_ignore_ascii_case(q))
+                {
+                    constant |= word(k + 1).eq_ignore_ascii_case("CONSTANT");
+                    k += 1;
+                }
                 block = Some((w, constant));
                 start = k + 1;
             }

@@ -121,7 +121,18 @@ pub(super) fn pou_run_time_inits(
 /// What [`pou_run_time_inits`] and [`global_run_time_inits`] find: the ranges (name, what is left
 /// out of the declaration), the assignments (a text of the region's length), and the assignments
 /// of structured values' fields with their instance ([`prefix_fields`]).
-pub(super) type Found = (Vec<Computed>, String, Vec<(Range<usize>, String)>);
+pub(super) struct Found {
+    /// The ranges (the variable's name, what is left out of its declaration).
+    pub cut: Vec<Computed>,
+    /// The assignments, where they are written (a text of the region's length).
+    pub inits: String,
+    /// The assignments of structured values' fields, with their variable and path
+    /// ([`super::init_fields::prefix_fields`]).
+    pub prefixed: Vec<(Range<usize>, super::init_fields::InitTarget)>,
+    /// The elements whose computed fields have no place (E1069, [`unplaceable_error`]): the
+    /// variable's name, the element.
+    pub unplaceable: Vec<Computed>,
+}
 
 /// The run-time initial values of the global lists (`VAR_GLOBAL`, not CONSTANT) in
 /// `text[region]`, a text outside any POU: a global initialised from another global
@@ -149,6 +160,7 @@ fn run_time_inits(
     let mut inits = blank(decls);
     let mut cut = Vec::new();
     let mut prefixed = Vec::new();
+    let mut unplaceable = Vec::new();
     let all = declarations(decls, &toks);
     // the variables declared before (upper-case, not constants), then the globals that no
     // constant of the POU hides
@@ -181,55 +193,52 @@ fn run_time_inits(
             matches!(d.block.as_str(), "VAR" | "VAR_TEMP")
                 || (!function && matches!(d.block.as_str(), "VAR_INPUT" | "VAR_OUTPUT"))
         };
+        // `VAR_INPUT CONSTANT` (CODESYS, TwinCAT: an instance's "parameter", an input set where
+        // the instance is declared, CODESYS online help "Command: Edit Parameters"): an input
+        let parameter = !global_lists && !function && d.block == "VAR_INPUT";
         let Some(k) = d.assign else { continue };
-        if !block_taken || d.constant || !d.single || toks[d.end].tok != Tok::Semi {
+        if !block_taken || (d.constant && !parameter) || !d.single || toks[d.end].tok != Tok::Semi {
             continue;
         }
         let value = &toks[k + 1..d.end];
-        // `fb : FB_X := (a := F(1, 2), b := gCfg, c := 5);`: the fields computed at run time
-        // become assignments `fb.a := F(1, 2);`, the others stay the declaration's
-        if let Some(fields) = structured_fields(decls, value, &variables, &globals) {
+        // `fb : FB_X := (a := F(1, 2), b := gCfg, c := 5);`, also nested (`w : FB_W := (View :=
+        // (iParent := THIS^));`, `a : ARRAY[0..1] OF ST_R := [(d := F(1)), (d := 2)];`): the
+        // fields computed at run time become assignments `fb.a := F(1, 2);`, the others stay the
+        // declaration's ([`super::init_fields`])
+        let computed = |t: &[Token]| run_time(decls, t, &variables, &globals);
+        if let Some(fields) = super::init_fields::computed_fields(decls, value, &computed) {
             let name = toks[d.start].range.clone();
             let label = &decls[name.clone()];
-            let all_run_time = fields.iter().all(|f| f.3);
-            if all_run_time {
-                let from = toks[k].range.start;
-                let to = toks[d.end - 1].range.end;
-                cut.push((
-                    region.start + name.start..region.start + name.end,
-                    region.start + from..region.start + to,
-                ));
-            }
-            // (whether a field that stays came before: then a computed field leaves with the
-            // separator before it, else with the one after it, so that two computed fields side
-            // by side never take the same comma)
-            let mut kept_before = false;
-            for &(sep, a, b, rt) in &fields {
-                if !rt {
-                    kept_before = true;
-                    continue;
+            let whole =
+                region.start + toks[k].range.start..region.start + toks[d.end - 1].range.end;
+            let var = (region.start + name.start)..(region.start + name.end);
+            if !fields.unplaceable.is_empty() {
+                // nothing assigned, the value left out: one E1069 at each element
+                for &(a, b) in &fields.unplaceable {
+                    unplaceable.push((
+                        var.clone(),
+                        region.start + value[a].range.start..region.start + value[b].range.end,
+                    ));
                 }
-                let field = value[a].range.start..value[b].range.end;
-                let after = value[b + 1].range.clone();
+                cut.push((var.clone(), whole));
+                continue;
+            }
+            if fields.all_computed() {
+                cut.push((var.clone(), whole));
+            } else {
+                for r in fields.cuts(value) {
+                    cut.push((var.clone(), region.start + r.start..region.start + r.end));
+                }
+            }
+            for f in fields.computed() {
+                let field = value[f.first].range.start..value[f.last].range.end;
+                let after = value[f.last + 1].range.clone();
                 inits.replace_range(field.clone(), &decls[field.clone()]);
                 inits.replace_range(after.start..after.start + 1, ";");
                 prefixed.push((
                     region.start + field.start..region.start + after.end,
-                    label.to_string(),
+                    (label.to_string(), var.clone(), f.path.clone()),
                 ));
-                if !all_run_time {
-                    // the field and one comma: the one before it after a field that stays, else
-                    // its own after it (a field that stays follows)
-                    let (from, to) = if kept_before {
-                        (value[sep].range.start, value[b].range.end)
-                    } else {
-                        (value[a].range.start, value[b + 1].range.end)
-                    };
-                    cut.push((
-                        region.start + name.start..region.start + name.end,
-                        region.start + from..region.start + to,
-                    ));
-                }
             }
             continue;
         }
@@ -262,88 +271,12 @@ fn run_time_inits(
             inits.replace_range(stmt.clone(), &decls[stmt]);
         }
     }
-    (!cut.is_empty()).then_some((cut, inits, prefixed))
-}
-
-/// The fields of a structured initial value `value` (its tokens, `(` to `)`: `(a := 1, b :=
-/// F(x))`) when at least one is computed at run time (it calls a function, reads a variable
-/// declared before or a global, holds a `^` or `THIS`; [`run_time`]), each `(separator before,
-/// first token, last token, computed)` as indexes into `value`. `None` when none is, or when an
-/// element is not `field := expr` with an expression (a nested `(..)` or `[..]` initialiser stays
-/// the declaration's).
-fn structured_fields(
-    decls: &str,
-    value: &[Token],
-    variables: &HashSet<String>,
-    globals: &HashSet<String>,
-) -> Option<Vec<(usize, usize, usize, bool)>> {
-    if value.len() < 5
-        || value[0].tok != Tok::LParen
-        || value.last()?.tok != Tok::RParen
-        || !value.iter().any(|t| t.tok == Tok::Assign)
-    {
-        return None;
-    }
-    let mut fields = Vec::new();
-    let mut depth = 0i32;
-    let mut first = 1;
-    for (j, t) in value.iter().enumerate().take(value.len() - 1).skip(1) {
-        match t.tok {
-            Tok::LParen | Tok::LBracket => depth += 1,
-            Tok::RParen | Tok::RBracket => depth -= 1,
-            Tok::Comma if depth == 0 => {
-                fields.push((first - 1, first, j - 1));
-                first = j + 1;
-            }
-            _ => {}
-        }
-        if depth < 0 {
-            return None;
-        }
-    }
-    fields.push((first - 1, first, value.len() - 2));
-    let mut out = Vec::new();
-    for (sep, a, b) in fields {
-        let toks = value.get(a..=b)?;
-        if toks.len() < 3 || toks[0].tok != Tok::Ident || toks[1].tok != Tok::Assign {
-            return None;
-        }
-        let rest = &toks[2..];
-        let nested = matches!(rest[0].tok, Tok::LBracket)
-            || (rest[0].tok == Tok::LParen && rest.iter().any(|t| t.tok == Tok::Assign));
-        let this = rest.iter().any(|t| {
-            t.tok == Tok::Ident
-                && decls
-                    .get(t.range.clone())
-                    .is_some_and(|w| w.eq_ignore_ascii_case("THIS"))
-        });
-        let rt = !nested
-            && (this
-                || rest.iter().any(|t| t.tok == Tok::Caret)
-                || run_time(decls, rest, variables, globals));
-        out.push((sep, a, b, rt));
-    }
-    out.iter().any(|f| f.3).then_some(out)
-}
-
-/// Puts the instance before the targets of the field assignments a structured initial value's
-/// computed fields became ([`pou_run_time_inits`]'s third part: the range of each, the
-/// instance's name): `a := F(1);` at one of them is `fb.a := F(1);`.
-pub(super) fn prefix_fields(stmts: &mut [super::ast::Stmt], prefixed: &[(Range<usize>, String)]) {
-    use super::ast::{Accessor, PlaceBase, StmtKind};
-    for s in stmts {
-        let at = s.span.start as usize;
-        let Some((_, inst)) = prefixed.iter().find(|(r, _)| r.contains(&at)) else {
-            continue;
-        };
-        if let StmtKind::Assign { target, .. } = &mut s.kind {
-            if let PlaceBase::Name(field) = &target.base {
-                let field = field.clone();
-                target.base = PlaceBase::Name(crate::ast::Ident::new(inst, field.span));
-                target.accessors.insert(0, Accessor::Field(field));
-            }
-        }
-    }
+    (!cut.is_empty()).then_some(Found {
+        cut,
+        inits,
+        prefixed,
+        unplaceable,
+    })
 }
 
 /// Whether `value` calls a function other than [`NOT_READ`]'s, or reads one of `variables` or
@@ -394,6 +327,18 @@ fn run_time(
         }
     }
     false
+}
+
+/// E1069 at `at` (an element of an array initial value, `[.., here, ..]`) of the variable `name`:
+/// a field computed at run time in an element whose index ladderc cannot know.
+pub(super) fn unplaceable_error(name: &str, at: crate::Span) -> diagnostics::Diagnostic {
+    diagnostics::Diagnostic::error(
+        diagnostics::code::E1069,
+        format!("the initial value of `{name}` computes a field in a repeated array element, or after a repetition counted by a name: ladderc cannot place its assignment"),
+    )
+    .at(at)
+    .with_primary_label("a computed field in this element")
+    .with_hint("write the elements one by one with literal repetition counts before it, or assign the field in the body or in FB_init")
 }
 
 /// W1433 at `at` (the first such initial value of a POU, `:= expr`), of the variable `name`.

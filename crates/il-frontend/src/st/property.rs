@@ -18,7 +18,9 @@
 //! or the input), never a call of itself; a statement without properties is not touched; every
 //! misuse is one located diagnostic and the statement is dropped: a write of a property without
 //! Set or a read of one without Get (E0337), a property passed to a VAR_IN_OUT or an output, or a
-//! component of it written (E0338). A property read in an ELSIF or WHILE condition is evaluated
+//! component of it written (E0338), unless the property is a REFERENCE TO (or the component is
+//! reached through `P^`): then the component is a variable, written or bound to an output or a
+//! VAR_IN_OUT after the getter's call. A property read in an ELSIF or WHILE condition is evaluated
 //! where the condition is (the IF is split at that ELSIF, the loop tests it after calling the
 //! getter); one in an UNTIL condition is a getter call in place, run before each test as a method
 //! call there is (`super::lower::method_flow`; E0108 before issue #13's Session 36).
@@ -451,6 +453,18 @@ impl Rewriter<'_, '_> {
         })
     }
 
+    /// Whether `p` is a component of the property `name` found at `at` (not the property
+    /// itself) that is written through the property's value: a REFERENCE TO (or a pointer
+    /// dereferenced, `P^.x`), so the component is a variable ([`Self::writes_through`]).
+    fn component_through(&self, p: &Place, at: At, name: &Ident) -> bool {
+        let whole = match at {
+            At::Base => p.accessors.is_empty(),
+            At::Own => p.accessors.len() == 1,
+            At::Field(k) => k + 1 == p.accessors.len(),
+        };
+        !whole && self.writes_through(p, at, name)
+    }
+
     /// The property a place names (or starts with: `inst.P.x`), its name and where it stands.
     fn find(&self, p: &Place) -> Option<(At, Prop, Ident)> {
         if let PlaceBase::Name(n) = &p.base {
@@ -629,12 +643,23 @@ impl Rewriter<'_, '_> {
                     in_outs.get(positional - 1).is_some_and(|k| !k.is_empty())
                 }
             };
+            let output = matches!(a.dir, ArgDir::Output { .. });
             let is_prop = match &a.value.kind {
-                ExprKind::Place(p) => self.find(p).map(|(_, _, n)| n),
+                ExprKind::Place(p) => self.find(p).map(|(at, _, n)| {
+                    let through = (in_out || output) && self.component_through(p, at, &n);
+                    (n, through)
+                }),
                 _ => None,
             };
-            let output = matches!(a.dir, ArgDir::Output { .. });
-            if let (Some(n), true) = (&is_prop, in_out || output) {
+            if let Some((_, true)) = &is_prop {
+                // `fb(Q => stAxis.nErr)` with `PROPERTY stAxis : REFERENCE TO ST_Status`: the
+                // getter runs before the call, and the output (or the VAR_IN_OUT) is the
+                // component of what its result refers to, a variable, as an assignment to it is
+                // (`Self::stmt`; TwinCAT: ESS tc_mca_std_lib `SercosErrId => stAxis.stStatus..`)
+                self.read(&mut a.value);
+                continue;
+            }
+            if let (Some((n, _)), true) = (&is_prop, in_out || output) {
                 let what = if in_out { "a VAR_IN_OUT" } else { "an output" };
                 self.error(
                     code::E0338,
@@ -713,7 +738,7 @@ impl Rewriter<'_, '_> {
                         At::Own => target.accessors.len() == 1,
                         At::Field(k) => k + 1 == target.accessors.len(),
                     };
-                    if !whole && self.writes_through(target, at, &name) {
+                    if self.component_through(target, at, &name) {
                         // `a.Child.Value := 5;` with `PROPERTY Child : REFERENCE TO FB_Tree`
                         // (or `P^.x := 1;` of a POINTER TO): the getter runs, and the write goes
                         // to what its result refers to (CODESYS, TwinCAT)
