@@ -293,6 +293,7 @@ pub fn accessor_methods(
             inst: Vec::new(),
             once: Vec::new(),
             local_inits: Vec::new(),
+            overloaded: false,
             access: None,
         });
     }
@@ -318,6 +319,7 @@ pub fn accessor_methods(
             inst: Vec::new(),
             once: Vec::new(),
             local_inits: Vec::new(),
+            overloaded: false,
             access: None,
         });
     }
