@@ -989,6 +989,7 @@ fn xml_methods(ctx: &mut Ctx, p: &Element, pou: &Pou) -> Vec<il_frontend::st::fi
                 inst: Vec::new(),
                 once: Vec::new(),
                 local_inits: Vec::new(),
+                overloaded: false,
                 access: member_access(m)
                     .map(|a| restricted(ctx, m, &pou.name.name, name, "METHOD", a)),
             });

@@ -163,6 +163,7 @@ pub(crate) fn interface(ctx: &mut Ctx, el: &Element) -> Option<PendingBody> {
             inst: Vec::new(),
             once: Vec::new(),
             local_inits: Vec::new(),
+            overloaded: false,
             access: None,
         });
     }

@@ -138,6 +138,11 @@ pub struct PendingMethod {
     pub local_inits: Vec<super::fb_init_args::DeclArgs>,
     /// Declared `PRIVATE` or `PROTECTED` (see [`crate::ast::Action::access`]).
     pub access: Option<crate::ast::MemberAccess>,
+    /// Its block declares another METHOD of its name after it (SIMATIC AX's overloading by
+    /// parameters; one E1084 at the second, this first one kept): the IMPLEMENTS check does not
+    /// compare it with the interface's, which may declare the other overload (one cause, one
+    /// error).
+    pub overloaded: bool,
 }
 
 /// An ST body waiting for the program's declarations: the POU (by the start of its name) and its text.
@@ -707,6 +712,9 @@ fn pending_members(
             continue;
         }
         let mut pm = pending_method(file, src, m, method_diags);
+        pm.overloaded = p.methods[k + 1..]
+            .iter()
+            .any(|o| o.name.eq_ignore_ascii_case(&m.name));
         // the widest access of the methods of its name (the E1084 above is the one error: a
         // call meant for a PUBLIC second one is no E1021 more)
         let access =
@@ -799,6 +807,7 @@ pub(super) fn pending_method(
         once,
         local_inits: Vec::new(),
         access: None,
+        overloaded: false,
     }
 }
 

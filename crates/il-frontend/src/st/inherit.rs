@@ -899,6 +899,7 @@ fn flatten_one(
                     inst: Vec::new(),
                     once: Vec::new(),
                     local_inits: Vec::new(),
+                    overloaded: false,
                     access: None,
                 });
                 files.push(file);
@@ -1303,6 +1304,8 @@ fn check_implements(
                         c.name.name
                     )),
                 ),
+                // (one overload of several, E1084: the interface may declare another one)
+                Some(x) if x.overloaded => {}
                 Some(x) if signature(x) != signature(m) => diags.push(
                     Diagnostic::error(
                         code::E0335,

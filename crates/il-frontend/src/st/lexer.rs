@@ -656,10 +656,13 @@ pub fn is_redundancy_pragma(text: &str) -> bool {
 
 /// Whether `text` (a pragma with its braces) is a description or attribute of its declaration:
 /// `{ key:"text" }` or `{key=value}`, one key (dotted parts allowed) and one value (a quoted
-/// string, or a word or number): CODESYS-based editors' descriptions (`{ DE:"Heater relay" }`,
-/// `{G:"EEPROM_Parameters"}`) and SIMATIC AX's attributes (`{s7.extern=ReadWrite}`). IEC 61131-3
-/// ed. 3 (6.2) leaves pragmas to the implementation; such a pair is metadata, no code (Beremiz's
-/// C code has statements: `;`, parentheses).
+/// string, or a word, number or reference without blanks): CODESYS-based editors' descriptions
+/// (`{ DE:"Heater relay" }`, `{G:"EEPROM_Parameters"}`), SIMATIC AX's attributes
+/// (`{s7.extern=ReadWrite}`) and AX Code's links from a declaration to its documentation page
+/// (`{axcode:docs-v0:@simatic-ax/conversion:TRUNC.md}`: a package and a Markdown file, round 30).
+/// IEC 61131-3 ed. 3 (6.2) leaves pragmas to the implementation, and CODESYS reads a pragma it
+/// cannot interpret as a comment; such a pair is metadata, no code (Beremiz's C code has
+/// statements: `;`, parentheses, blanks).
 pub fn is_metadata_pragma(text: &str) -> bool {
     if text.starts_with("{{") {
         return false;
@@ -689,9 +692,10 @@ pub fn is_metadata_pragma(text: &str) -> bool {
     quoted('"')
         || quoted('\'')
         || (!value.is_empty()
-            && value
-                .chars()
-                .all(|c| c.is_ascii_alphanumeric() || matches!(c, '_' | '.' | '#' | '-' | '+')))
+            && value.chars().all(|c| {
+                c.is_ascii_alphanumeric()
+                    || matches!(c, '_' | '.' | '#' | '-' | '+' | ':' | '@' | '/')
+            }))
 }
 
 /// The message prefix of the note of a description or attribute pragma ([`is_metadata_pragma`]):
@@ -811,7 +815,7 @@ pub fn pragma_diagnostic(text: &str, span: crate::Span) -> diagnostics::Diagnost
             format!("{METADATA_NOTE} `{shown}` is ignored"),
         )
         .at(span)
-        .with_hint("a `{ key:\"text\" }` or `{key=value}` pragma describes its declaration (an editor's description, an export attribute); it changes nothing in the compiled program"),
+        .with_hint("a `{ key:\"text\" }` or `{key=value}` pragma describes its declaration (an editor's description, an export attribute, a link to its documentation); it changes nothing in the compiled program"),
         PragmaKind::Informational => Diagnostic::new(
             code::W0301,
             Severity::Note,

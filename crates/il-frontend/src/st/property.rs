@@ -295,6 +295,7 @@ pub fn accessor_methods(
             inst: Vec::new(),
             once: Vec::new(),
             local_inits: Vec::new(),
+            overloaded: false,
             access: None,
         });
     }
@@ -320,6 +321,7 @@ pub fn accessor_methods(
             inst: Vec::new(),
             once: Vec::new(),
             local_inits: Vec::new(),
+            overloaded: false,
             access: None,
         });
     }

@@ -10,7 +10,8 @@
 //! wrote it.
 //!
 //! A task declared by its kind, `TASK Main : ProgramCycle;` (SIMATIC AX: the kind is a type of
-//! the `Siemens.Simatic.S71500.Tasks` namespace), is one E1048 naming the kind ([`typed_tasks`]):
+//! the `Siemens.Simatic.S71500.Tasks` namespace; also written with it,
+//! `TASK Main : Siemens.Simatic.S71500.Tasks.ProgramCycle;`), is one E1048 naming the kind ([`typed_tasks`]):
 //! IEC 61131-3 declares a task by its schedule. The declaration and the `WITH Main` of the program
 //! instances it runs are blanked, so the instances are not reported again. A directive is `USING` + a name (dotted parts) [`, name` ...] + `;`, at the start of the
 //! text, after a `;` or after a POU header's name: `USING` names nothing else in ST.
@@ -150,30 +151,33 @@ pub(super) fn typed_tasks(
     let mut names = Vec::new();
     let mut k = 0;
     while k + 4 < toks.len() {
-        let typed = is_word(src, &toks[k], "TASK")
+        // `TASK name : Kind;`, the kind bare or with its namespace
+        // (`Siemens.Simatic.S71500.Tasks.ProgramCycle`, as SIMATIC AX's templates write it)
+        let header = is_word(src, &toks[k], "TASK")
             && toks[k + 1].tok == Tok::Ident
             && toks[k + 2].tok == Tok::Colon
-            && toks[k + 3].tok == Tok::Ident
-            && toks[k + 4].tok == Tok::Semi;
-        if !typed {
+            && toks[k + 3].tok == Tok::Ident;
+        let Some(semi) = header.then(|| qualified_name_end(toks, k + 3)).flatten() else {
             k += 1;
             continue;
-        }
-        let (task, kind) = (word(src, &toks[k + 1]), word(src, &toks[k + 3]));
+        };
+        let task = word(src, &toks[k + 1]);
+        let kind_range = toks[k + 3].range.start..toks[semi - 1].range.end;
+        let kind = &src[kind_range.clone()];
         diags.push(
             Diagnostic::error(
                 code::E1048,
                 format!("task `{task}` is declared by its kind `{kind}`, not by a schedule"),
             )
-            .at(Span::new(file, toks[k + 3].range.start, toks[k + 3].range.end))
+            .at(Span::new(file, kind_range.start, kind_range.end))
             .with_primary_label("a task kind of a library (SIMATIC AX's `ProgramCycle`, `Startup` ...)")
             .with_hint("IEC 61131-3 declares a task by its schedule: `TASK name (INTERVAL := T#10ms, PRIORITY := 1);` (cyclic) or `(SINGLE := trigger, PRIORITY := 1)`; the programs it runs are not compiled into a task"),
         );
         names.push(task.to_ascii_uppercase());
-        let range = toks[k].range.start..toks[k + 4].range.end;
+        let range = toks[k].range.start..toks[semi].range.end;
         let text = out.get_or_insert_with(|| src.to_string());
         text.replace_range(range.clone(), &" ".repeat(range.len()));
-        k += 5;
+        k = semi + 1;
     }
     if names.is_empty() {
         return None;
@@ -190,4 +194,17 @@ pub(super) fn typed_tasks(
         }
     }
     out
+}
+
+/// The index of the `;` that ends the name `a.b.c` whose first part is `toks[first]`, or `None`
+/// when the parts are not followed by `;`. Each step moves past one `.` and one name: bounded by
+/// the tokens.
+fn qualified_name_end(toks: &[Token], first: usize) -> Option<usize> {
+    let mut j = first + 1;
+    while toks.get(j).is_some_and(|t| t.tok == Tok::Dot)
+        && toks.get(j + 1).is_some_and(|t| t.tok == Tok::Ident)
+    {
+        j += 2;
+    }
+    toks.get(j).is_some_and(|t| t.tok == Tok::Semi).then_some(j)
 }
