@@ -1,0 +1,123 @@
+//! Follow-on errors and messages of TwinCAT object-oriented code found in public projects (issue
+//! #13, round 30), end to end:
+//! - `__QUERYINTERFACE` / `__QUERYPOINTER` on variables whose interface comes from a library that
+//!   is not given (Tc3_BA2's `I_BA_EventObject`): the missing types are the one cause, E1003 at
+//!   their declarations (before: E1019 "unknown function `__QUERYINTERFACE`" besides them, or,
+//!   where the project declares interfaces, E0341 "no interface variable" without naming the type);
+//! - a function block whose base is missing (TcUnit's `FB_TestSuite`): its methods' VAR_INST
+//!   instances with FB_init arguments are no further error (before: one E0329 each, 69 in a TcUnit
+//!   test library), while a block whose base is given still runs their FB_init;
+//! - E0335 shows a method's ANY input as written (`Value : ANY`), not ladderc's hidden inputs.
+
+mod common;
+use common::{check_text, column, run_text};
+
+/// The error lines of a check (short format), each up to its hint.
+fn errors(src: &str) -> Vec<String> {
+    let (code, lines) = check_text("app.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    lines
+        .iter()
+        .filter(|l| l.contains("error["))
+        .map(|l| {
+            l.split_once(" (hint")
+                .map_or(l.clone(), |(h, _)| h.to_string())
+        })
+        .collect()
+}
+
+/// TF8040's pattern (`F_AcknowledgeEventClass`): both operands of `__QUERYINTERFACE` are of
+/// interfaces of a library that is not given, in a project that declares no interface. Before:
+/// the two E1003 and E1019 "unknown function `__QUERYINTERFACE`" (a cascade: ladderc has the
+/// operator). Now the two E1003, nothing else.
+#[test]
+fn queryinterface_on_missing_interfaces_is_the_missing_types_only() {
+    let src = "FUNCTION F_Ack : BOOL\nVAR\n    iObj : I_Lib_Object;\n    iEvt : I_Lib_EventObject;\nEND_VAR\n\
+IF __QUERYINTERFACE(iObj, iEvt) THEN\n    F_Ack := TRUE;\nEND_IF\nEND_FUNCTION\n";
+    let errs = errors(src);
+    assert_eq!(
+        errs,
+        [
+            "app.st:3:12: error[E1003]: unknown type `I_Lib_Object`",
+            "app.st:4:12: error[E1003]: unknown type `I_Lib_EventObject`",
+        ],
+        "{errs:?}"
+    );
+}
+
+/// The same where the project declares an interface of its own (the rewrite of interface
+/// variables runs): before, E0341 "the second operand of `__QUERYINTERFACE` is no interface
+/// variable", the missing type named nowhere (TF8040 Concepts). Now the E1003 of the missing
+/// type, at its declaration; `__QUERYPOINTER` likewise.
+#[test]
+fn queryinterface_with_project_interfaces_names_the_missing_type() {
+    let src = "INTERFACE I_Own\nEND_INTERFACE\n\
+FUNCTION F_Ack : BOOL\nVAR\n    iOwn : I_Own;\n    iEvt : I_Lib_EventObject;\n    p : POINTER TO INT;\nEND_VAR\n\
+IF __QUERYINTERFACE(iOwn, iEvt) THEN\n    F_Ack := TRUE;\nEND_IF\n\
+F_Ack := __QUERYPOINTER(iEvt, p);\nEND_FUNCTION\n";
+    let errs = errors(src);
+    assert_eq!(
+        errs,
+        ["app.st:6:12: error[E1003]: unknown type `I_Lib_EventObject`"],
+        "{errs:?}"
+    );
+}
+
+/// A block with an FB_init taking a name, and a test block whose METHOD keeps one in its
+/// VAR_INST with an FB_init argument (lcls-new-motion's TcUnit tests); `base` is the EXTENDS
+/// clause of the test block.
+fn suite(base: &str) -> String {
+    format!(
+        "FUNCTION_BLOCK FB_Stage\nVAR\n    nId : INT;\nEND_VAR\n\
+METHOD FB_init : BOOL\nVAR_INPUT\n    bInitRetains : BOOL;\n    bInCopyCode : BOOL;\n    nStage : INT;\nEND_VAR\n\
+nId := nStage;\nEND_METHOD\nEND_FUNCTION_BLOCK\n\n\
+FUNCTION_BLOCK FB_Test{base}\nVAR_OUTPUT\n    nSeen : INT;\nEND_VAR\n\
+METHOD PRIVATE T1\nVAR_INST\n    stage : FB_Stage(nStage := 8);\nEND_VAR\n\
+nSeen := stage.nId;\nEND_METHOD\nT1();\nEND_FUNCTION_BLOCK\n"
+    )
+}
+
+/// The test block EXTENDS a base the files do not declare (TcUnit's `FB_TestSuite`): the E0330
+/// alone. Before: E0330 and E0329 "this instance of `FB_Stage` is not one ladderc initialises"
+/// at the VAR_INST instance (69 of lcls-new-motion's 89 errors).
+#[test]
+fn missing_base_is_one_error_not_one_per_fb_init_argument() {
+    let errs = errors(&suite(" EXTENDS FB_TestSuite"));
+    assert_eq!(errs.len(), 1, "{errs:?}");
+    assert!(
+        errs[0].starts_with("app.st:15:32: error[E0330]: `FB_Test` EXTENDS `FB_TestSuite`"),
+        "{errs:?}"
+    );
+}
+
+/// With the base given, the method's VAR_INST instance gets its FB_init argument before the
+/// first cycle (Beckhoff Infosys "Methods FB_init, FB_reinit and FB_exit"): `nSeen` is 8 from the
+/// first cycle on. (Guards the fix above: only a broken chain's arguments are dropped.)
+#[test]
+fn given_base_still_runs_the_method_instances_fb_init() {
+    let src = format!(
+        "FUNCTION_BLOCK FB_TestSuite\nVAR\n    nTests : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n\n{}\n\
+PROGRAM MAIN\nVAR\n    t : FB_Test;\n    n : INT;\nEND_VAR\nt();\nn := t.nSeen;\nEND_PROGRAM\n",
+        suite(" EXTENDS FB_TestSuite")
+    );
+    let (trace, _) = run_text("app.st", &src, 3, "MAIN.n");
+    assert_eq!(column(&trace, "MAIN.n"), [8.0, 8.0, 8.0], "{trace}");
+}
+
+/// An implementing method whose input is `Value : ANY` where the interface has `ANY_STRING`
+/// (Tc3_UnitTest's FB_StringBuilder): the mismatch is real (E0335), and the message shows the
+/// method as written. Before: `M_ToAny(Value__DISIZE : DINT, Value__TYPECLASS_ANY : INT,
+/// Value__PVALUE : POINTER TO BYTE) : BOOL`.
+#[test]
+fn e0335_shows_an_any_input_as_written() {
+    let src = "INTERFACE I_Builder\nMETHOD M_ToAny : BOOL\nVAR_INPUT\n    Value : ANY_STRING;\nEND_VAR\nEND_METHOD\nEND_INTERFACE\n\n\
+FUNCTION_BLOCK FB_Builder IMPLEMENTS I_Builder\n\
+METHOD M_ToAny : BOOL\nVAR_INPUT\n    Value : ANY;\n    nMax : INT;\nEND_VAR\n\
+M_ToAny := Value.diSize > nMax;\nEND_METHOD\nEND_FUNCTION_BLOCK\n";
+    let errs = errors(src);
+    assert_eq!(
+        errs,
+        ["app.st:10:8: error[E0335]: method `M_ToAny` of `FB_Builder` is `M_ToAny(Value : ANY, nMax : INT) : BOOL`, but interface `I_Builder` declares `M_ToAny(Value : ANY_STRING) : BOOL`"],
+        "{errs:?}"
+    );
+}
