@@ -121,3 +121,39 @@ M_ToAny := Value.diSize > nMax;\nEND_METHOD\nEND_FUNCTION_BLOCK\n";
         "{errs:?}"
     );
 }
+
+/// An integer beside a narrower bit string in `AND` / `OR` (KimRo's Blowfish:
+/// `SHL(data, 8) OR (key[j] AND 16#FF)` of a UDINT `data` and a BYTE key): the bit string widens
+/// into the integer's bit pattern, zero-filled, and the result is that integer, as ladderc
+/// already counts an integer given to a bit-string function (W1438, CODESYS and TwinCAT). Before:
+/// E1005 "OR of UDINT and BYTE". A signed INT keeps its bits (`-1 AND 16#0F` is 15) and a BYTE
+/// 16#80 stays 128 (no sign extension).
+#[test]
+fn integer_or_narrower_bit_string_works_on_the_integers_bits() {
+    let src = "PROGRAM MAIN\nVAR\n    data : UDINT := 16#100;\n    key : BYTE := 16#0F;\n    high : BYTE := 16#80;\n\
+    minus : INT := -1;\n    zero : INT;\n    r : UDINT;\n    j, m : INT;\nEND_VAR\n\
+r := SHL(data, 8) OR (key AND 16#FF);\ndata := data + 1;\nj := minus AND key;\nm := zero OR high;\nEND_PROGRAM\n";
+    let (code, lines) = check_text("bits.st", src);
+    assert_eq!(code, Some(0), "{lines:?}");
+    assert!(
+        lines.len() == 1 && lines[0].starts_with("bits.st:11:6: warning[W1438]: SHL of UDINT"),
+        "{lines:?}"
+    );
+    let (trace, _) = run_text("bits.st", src, 2, "MAIN.r,MAIN.j,MAIN.m");
+    assert_eq!(column(&trace, "MAIN.r"), [65551.0, 65807.0], "{trace}");
+    assert_eq!(column(&trace, "MAIN.j"), [15.0, 15.0], "{trace}");
+    assert_eq!(column(&trace, "MAIN.m"), [128.0, 128.0], "{trace}");
+}
+
+/// A bit string wider than the integer (`INT AND DWORD`) stays E1005: the integer would have to
+/// be sign- or zero-extended, which neither IEC 61131-3 nor ladderc's rule above decides.
+#[test]
+fn integer_and_wider_bit_string_stays_e1005() {
+    let src = "PROGRAM MAIN\nVAR\n    n : INT;\n    d : DWORD;\n    r : DWORD;\nEND_VAR\nr := n AND d;\nEND_PROGRAM\n";
+    let errs = errors(src);
+    assert_eq!(errs.len(), 1, "{errs:?}");
+    assert!(
+        errs[0].starts_with("app.st:7:12: error[E1005]: AND of INT and DWORD"),
+        "{errs:?}"
+    );
+}
