@@ -7,10 +7,13 @@
 //! - a function block whose base is missing (TcUnit's `FB_TestSuite`): its methods' VAR_INST
 //!   instances with FB_init arguments are no further error (before: one E0329 each, 69 in a TcUnit
 //!   test library), while a block whose base is given still runs their FB_init;
-//! - E0335 shows a method's ANY input as written (`Value : ANY`), not ladderc's hidden inputs.
+//! - E0335 shows a method's ANY input as written (`Value : ANY`), not ladderc's hidden inputs;
+//! - `udint OR byte`: the bit string widens into the integer's bits (W1438; before: E1005);
+//! - `ton : TON;` in a TwinCAT object is accepted with W1456 (Beckhoff Infosys, "Shading rules":
+//!   a function block and a variable may be named the same; before: E1031), and runs.
 
 mod common;
-use common::{check_text, column, run_text};
+use common::{check_files, check_text, column, run_text, run_traced};
 
 /// The error lines of a check (short format), each up to its hint.
 fn errors(src: &str) -> Vec<String> {
@@ -155,5 +158,85 @@ fn integer_and_wider_bit_string_stays_e1005() {
     assert!(
         errs[0].starts_with("app.st:7:12: error[E1005]: AND of INT and DWORD"),
         "{errs:?}"
+    );
+}
+
+/// A TwinCAT object whose variables are named like the standard blocks they are instances of
+/// (bstiffler582/TcHmi_WebSockets' `ton : TON;`).
+const TON_NAMED_TON: &str = "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  <POU Name=\"MAIN\" Id=\"{00000000-0000-4000-8000-000000000010}\" SpecialFunc=\"None\">\n    <Declaration><![CDATA[PROGRAM MAIN\nVAR\n\tton : TON;\n\tr_trig : R_TRIG;\n\tstart, done : BOOL;\n\tedges : INT;\n\tother : TON;\nEND_VAR\n]]></Declaration>\n    <Implementation>\n      <ST><![CDATA[start := TRUE;\nton(IN := start, PT := T#30MS);\ndone := ton.Q;\nr_trig(CLK := done);\nIF r_trig.Q THEN\n\tedges := edges + 1;\nEND_IF\nother(IN := done, PT := T#10MS);]]></ST>\n    </Implementation>\n  </POU>\n</TcPlcObject>\n";
+
+/// `ton : TON;` and `r_trig : R_TRIG;` in a `.TcPOU`: TwinCAT accepts a variable named like a
+/// block (Beckhoff Infosys, TwinCAT 3 PLC, "Shading rules"; its "Keywords" list has no block), so
+/// ladderc does, with one W1456 per such declaration; the instances run (`ton.Q` after 30 ms,
+/// one rising edge counted, another TON beside them unaffected). Before: E1031 for each.
+#[test]
+fn twincat_variable_named_like_its_standard_block_runs() {
+    let (code, lines) = check_files(&[("MAIN.TcPOU", TON_NAMED_TON)]);
+    assert_eq!(code, Some(0), "{lines:?}");
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("MAIN.TcPOU");
+    std::fs::write(&file, TON_NAMED_TON).unwrap();
+    let out = common::ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    let warnings = common::diagnostic_heads(&out.stderr, dir.path(), true);
+    assert_eq!(
+        warnings,
+        [
+            "MAIN.TcPOU:6:2: warning[W1456]: `ton` is the name of a standard function block, which IEC 61131-3 reserves: accepted as a variable name, as TwinCAT does",
+            "MAIN.TcPOU:7:2: warning[W1456]: `r_trig` is the name of a standard function block, which IEC 61131-3 reserves: accepted as a variable name, as TwinCAT does",
+        ],
+        "{warnings:?}"
+    );
+    let (trace, _) = run_traced(&file, 6, "MAIN.done,MAIN.edges,MAIN.other.Q");
+    assert_eq!(
+        column(&trace, "MAIN.done"),
+        [0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "MAIN.edges"),
+        [0.0, 0.0, 0.0, 1.0, 1.0, 1.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "MAIN.other.Q"),
+        [0.0, 0.0, 0.0, 0.0, 1.0, 1.0],
+        "{trace}"
+    );
+}
+
+/// The same declaration in an IEC 61131-3 text (`.st`) stays E1031: the standard reserves the
+/// names of its blocks (2nd ed. Annex C) and matiec refuses them.
+#[test]
+fn st_variable_named_like_a_standard_block_stays_e1031() {
+    let errs = errors(
+        "PROGRAM MAIN\nVAR\n    ton : TON;\nEND_VAR\nton(IN := TRUE, PT := T#1S);\nEND_PROGRAM\n",
+    );
+    assert_eq!(
+        errs,
+        ["app.st:3:5: error[E1031]: `ton` is reserved in IEC 61131-3 (a standard function block): it cannot name a variable"],
+        "{errs:?}"
+    );
+}
+
+/// A non-formal call of a user FUNCTION leaving out trailing inputs that have initial values
+/// (guanda's `WStrConcat("a", b)`, 30 calls): IEC 61131-3 (ed. 2, 2.5.1.1; ed. 3, 6.6.1.4.2) lets
+/// only a formal call leave inputs out, and no Beckhoff or CODESYS page says otherwise, so it stays
+/// one E1020 at the arguments; its hint now says how to write it (name the inputs given), where
+/// before it only listed the inputs.
+#[test]
+fn non_formal_call_leaving_out_inputs_stays_e1020_with_the_formal_form() {
+    let src = "FUNCTION F_Cat : STRING\nVAR_INPUT\n    a : STRING := '';\n    b : STRING := '';\n    c : STRING := 'z';\nEND_VAR\n\
+F_Cat := CONCAT(CONCAT(a, b), c);\nEND_FUNCTION\n\
+PROGRAM MAIN\nVAR\n    s : STRING;\nEND_VAR\ns := F_Cat('x', 'y');\nEND_PROGRAM\n";
+    let (code, lines) = check_text("app.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(
+        lines,
+        ["app.st:13:12: error[E1020]: F_Cat takes 3 inputs, 2 given (hint: give its inputs in order: a, b, c; or name the ones given (`F_Cat(a := ..., b := ...)`): a formal call leaves the others at their initial values)"],
+        "{lines:?}"
     );
 }

@@ -255,9 +255,9 @@ pub fn flatten(
         );
     }
     // a block with a broken chain compiles without its body and methods (its errors are reported),
-    // and its methods' instances take no FB_init arguments: the missing base is the one error
-    // (before round 30, one E0329 "not one ladderc initialises" per such VAR_INST instance: 69
-    // in a TcUnit test library whose FB_TestSuite base is not given)
+    // and its methods' instances initialise nothing: the missing base is the one error, not one
+    // per instance given FB_init arguments (`super::fb_init`; before round 30, an E0329 "not one
+    // ladderc initialises" each: 69 in a TcUnit test library whose FB_TestSuite is not given)
     for key in &keys {
         let Some(chain) = chains.get(key) else {
             continue;
@@ -273,11 +273,9 @@ pub fn flatten(
             out[k].text = String::new();
             out[k].methods.clear();
             if !dropped.is_empty() {
-                for pb in out.iter_mut() {
-                    pb.fb_init_args.retain(|a| {
-                        !dropped.iter().any(|b| {
-                            b.file == a.span.file && b.start <= a.span.start && a.span.end <= b.end
-                        })
+                for a in out.iter_mut().flat_map(|pb| pb.fb_init_args.iter_mut()) {
+                    a.in_uncompiled_method |= dropped.iter().any(|b| {
+                        b.file == a.span.file && b.start <= a.span.start && a.span.end <= b.end
                     });
                 }
             }
