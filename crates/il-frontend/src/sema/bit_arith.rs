@@ -100,6 +100,40 @@ impl Body<'_, '_> {
     }
 }
 
+/// The inputs of a bit-string function (`AND`, `OR`, `XOR`) that mix an integer and bit strings
+/// no wider than it (`udint OR byte`, KimRo's Blowfish `SHL(data, 8) OR (key[j] AND 16#FF)`):
+/// the bit strings widen into the integer's bit pattern (BYTE into DWORD, IEC 61131-3 ed. 3's
+/// implicit bit-string widening, zero-filled) and take its type, so that the function works on
+/// the integer's bits and gives that integer, as for an integer alone (W1438: CODESYS and
+/// TwinCAT). A bit string wider than the integer (`int AND dword`: the integer would have to be
+/// sign- or zero-extended) and integers without a common type are left as written (E1005).
+pub(super) fn bits_beside_integer(known: &mut [(Type, Span)]) {
+    let elementary: Vec<Option<Elementary>> = known.iter().map(|k| k.0.elementary()).collect();
+    let Some(Some(int)) = elementary
+        .iter()
+        .find(|e| e.is_some_and(|e| bits_of(e).is_some()))
+    else {
+        return;
+    };
+    let Some(pattern) = bits_of(*int) else {
+        return;
+    };
+    let fits = elementary.iter().all(|e| match e {
+        Some(e) if *e == *int => true,
+        Some(e) if e.is_bit() && *e != E::Bool => e.size_bytes() <= pattern.size_bytes(),
+        _ => false,
+    });
+    let has_bits = elementary
+        .iter()
+        .any(|e| e.is_some_and(|e| e.is_bit() && e != E::Bool));
+    if !fits || !has_bits {
+        return;
+    }
+    for k in known.iter_mut() {
+        k.0 = Type::Elementary(*int);
+    }
+}
+
 /// The bit string of an integer's width (`INT` and `UINT` -> `WORD`); `None` for other types.
 pub(super) fn bits_of(e: Elementary) -> Option<Elementary> {
     match e {

@@ -199,6 +199,9 @@ impl Body<'_, '_> {
                 }
             }
         }
+        if class == Class::AnyBit {
+            super::bit_arith::bits_beside_integer(&mut known);
+        }
         let t = if !known.is_empty() {
             // all of one type (the usual case): that is the common type, without a list of copies
             let same = known.iter().all(|k| k.0 == known[0].0);

@@ -1001,8 +1001,31 @@ impl Analyzer<'_> {
                 let keyword_parameter = self
                     .keyword_parameters
                     .contains(&(d.name.span.file, d.name.span.start));
+                // a standard block's name in a TwinCAT object (`ton : TON;`): Beckhoff's keywords
+                // have no block and its "Shading rules" let a variable be named like a block
+                // (Infosys, TwinCAT 3 PLC): accepted, W1456; elsewhere E1031 as the standard says
+                let twincat_block = reserved_name(&d.name.name) == Some(STANDARD_BLOCK)
+                    && super::is_twincat_file(d.name.span.file);
+                if twincat_block && !self.declaring_fields {
+                    self.warning(
+                        code::W1456,
+                        d.name.span,
+                        format!(
+                            "`{}` is the name of a standard function block, which IEC 61131-3 reserves: accepted as a variable name, as TwinCAT does",
+                            d.name.name
+                        ),
+                    )
+                    .label("standard function block's name")
+                    .hint(format!(
+                        "for portable IEC 61131-3 code rename the variable, for example `fb{}`",
+                        d.name.name
+                    ));
+                }
                 if let Some(why) = reserved_name(&d.name.name).filter(|_| {
-                    !self.declaring_fields && !keyword_parameter && twincat_word.is_none()
+                    !self.declaring_fields
+                        && !keyword_parameter
+                        && twincat_word.is_none()
+                        && !twincat_block
                 }) {
                     // reported once, at the declaration; the variable is kept so that its uses
                     // give no further errors
@@ -2075,6 +2098,9 @@ fn twincat_configuration_word(name: &str, file: diagnostics::FileId) -> Option<&
     .map(|(_, place)| place)
 }
 
+/// What [`reserved_name`] says of a standard function block's name.
+const STANDARD_BLOCK: &str = "a standard function block";
+
 /// Why `name` cannot name a variable (IEC 61131-3 2nd ed. Annex C, 3rd ed. 6.1.3: keywords, the
 /// names of the elementary data types and of the standard function blocks), or `None`. Names the
 /// standard also lists but real programs use and matiec, CODESYS and ladderc read unambiguously are
@@ -2124,7 +2150,7 @@ pub fn reserved_name(name: &str) -> Option<&'static str> {
         // variables so)
         Some("an elementary data type")
     } else if StdFb::from_name(name).is_some() && !StdFb::is_vendor_name(name) {
-        Some("a standard function block")
+        Some(STANDARD_BLOCK)
     } else {
         None
     }

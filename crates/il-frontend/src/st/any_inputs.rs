@@ -1003,6 +1003,24 @@ impl Rewrite<'_, '_> {
     }
 }
 
+/// The ANY input as written that the hidden input `name` stands for, for messages that show a
+/// signature (E0335): `Some(Some(("In", "ANY_NUM")))` for the class input `In__TYPECLASS_ANY_NUM`
+/// (the input written `In : ANY_NUM`), `Some(None)` for the size and address inputs (shown through
+/// the class input), `None` for any other input.
+pub fn written_input(name: &str) -> Option<Option<(&str, String)>> {
+    let up = name.to_ascii_uppercase();
+    if [SIZE, VALUE]
+        .iter()
+        .any(|s| up.len() > s.len() && up.ends_with(s))
+    {
+        return Some(None);
+    }
+    let k = up.find(CLASS).filter(|k| *k > 0)?;
+    let generic = up[k + CLASS.len()..].trim_start_matches('_');
+    let generic = if generic.is_empty() { "ANY" } else { generic };
+    Some(Some((name.get(..k)?, generic.to_string())))
+}
+
 /// Whether `name` is a hidden input of an ANY input (`In__DISIZE`, `In__TYPECLASS`, `In__PVALUE`).
 fn is_hidden(name: &Ident) -> bool {
     let up = name.name.to_ascii_uppercase();

@@ -371,6 +371,11 @@ pub fn add_init_calls(
             // (an unknown type, or a block not compiled: their own error is reported)
             continue;
         }
+        if has && a.in_uncompiled_method {
+            // (a method of a block whose base is missing, not compiled: the E0330 is the cause;
+            // arguments FB_init cannot take at all are still reported below)
+            continue;
+        }
         if !has && a.args.is_empty() && a.elements.is_empty() {
             // `c : FB_Count();` in a METHOD's VAR (as in a program's): the empty list of a block
             // without FB_init passes nothing (TwinCAT accepts it wherever the instance is)

@@ -46,6 +46,10 @@ pub struct DeclArgs {
     /// An array's arguments element by element (`ARRAY[0..1] OF FB_X[(a := 1), (a := 2)]`,
     /// CODESYS): each list with its span, `(` to `)`; empty for one list `FB_X(...)`.
     pub elements: Vec<(Vec<Arg>, Span)>,
+    /// The declaration is in a METHOD of a block whose EXTENDS chain is broken (set by
+    /// [`super::inherit`], which compiles such a block without its methods): no instance takes
+    /// the arguments, which is the missing base's error, not this declaration's.
+    pub in_uncompiled_method: bool,
 }
 
 /// See the module documentation; `None` when the text has no such declaration.
@@ -128,6 +132,7 @@ pub(super) fn fb_init_arguments(
             args,
             span: Span::new(file, start, end),
             elements: Vec::new(),
+            in_uncompiled_method: false,
         });
         blank(text.get_or_insert_with(|| src.to_string()), start..end);
         k = close + 1;
@@ -189,6 +194,7 @@ fn element_lists(
         args: Vec::new(),
         span: Span::new(file, start, end),
         elements,
+        in_uncompiled_method: false,
     });
     blank(text.get_or_insert_with(|| src.to_string()), start..end);
     k

@@ -254,7 +254,10 @@ pub fn flatten(
             chain_of(key, &classes, &interfaces, &other_pous, diags),
         );
     }
-    // a block with a broken chain compiles without its body and methods (its errors are reported)
+    // a block with a broken chain compiles without its body and methods (its errors are reported),
+    // and its methods' instances initialise nothing: the missing base is the one error, not one
+    // per instance given FB_init arguments (`super::fb_init`; before round 30, an E0329 "not one
+    // ladderc initialises" each: 69 in a TcUnit test library whose FB_TestSuite is not given)
     for key in &keys {
         let Some(chain) = chains.get(key) else {
             continue;
@@ -262,8 +265,20 @@ pub fn flatten(
         let c = &classes[key];
         let Some(k) = c.pending else { continue };
         let Some(chain) = chain else {
+            let dropped: Vec<Span> = out[k]
+                .methods
+                .iter()
+                .flat_map(|m| m.blocks.iter().map(|b| b.span))
+                .collect();
             out[k].text = String::new();
             out[k].methods.clear();
+            if !dropped.is_empty() {
+                for a in out.iter_mut().flat_map(|pb| pb.fb_init_args.iter_mut()) {
+                    a.in_uncompiled_method |= dropped.iter().any(|b| {
+                        b.file == a.span.file && b.start <= a.span.start && a.span.end <= b.end
+                    });
+                }
+            }
             continue;
         };
         diags.extend(c.oop.deferred.iter().cloned());
@@ -1145,7 +1160,8 @@ fn signature(m: &PendingMethod) -> String {
 }
 
 /// A method's signature for a message: `M(a : INT, VAR_OUTPUT q : BOOL) : BOOL`; a variable-length in-out as written
-/// (`a : ARRAY[*] OF LREAL`), not as its hidden inputs (`varlen`).
+/// (`a : ARRAY[*] OF LREAL`), not as its hidden inputs (`varlen`), and an ANY input likewise
+/// (`In : ANY_NUM`, not `any_inputs`' hidden inputs).
 fn shown(m: &PendingMethod) -> String {
     let mut ins: Vec<String> = Vec::new();
     for v in m
@@ -1163,6 +1179,16 @@ fn shown(m: &PendingMethod) -> String {
         };
         if hidden(super::varlen::LOWER) || hidden(super::varlen::UPPER) {
             continue;
+        }
+        // an ANY input as written (`Value : ANY`), not its hidden inputs (`any_inputs`: before
+        // round 30, `Value__DISIZE : DINT, Value__TYPECLASS_ANY : INT, Value__PVALUE : ...`)
+        match super::any_inputs::written_input(&v.name.name) {
+            Some(Some((name, generic))) => {
+                ins.push(format!("{name} : {generic}"));
+                continue;
+            }
+            Some(None) => continue,
+            None => {}
         }
         match (up.strip_suffix(super::varlen::ADDRESS), &v.ty) {
             (Some(base), TypeRef::Ref { target, .. }) if !base.is_empty() => {

@@ -476,6 +476,36 @@ struct Rewriter<'a, 'd> {
     first: usize,
 }
 
+/// Whether `s` itself (an assignment's value, a call's arguments, a control statement's
+/// conditions; not the statements it holds) calls `__QUERYINTERFACE` or `__QUERYPOINTER`: such a
+/// statement is rewritten even where the project declares no interface (its operands then name a
+/// type declared nowhere, E1003, or are no interface variables, E0341), never left as a call of
+/// a function nothing declares (before round 30, E1019 "unknown function `__QUERYINTERFACE`").
+fn queries_interface(s: &Stmt) -> bool {
+    fn in_expr(e: &Expr, depth: usize) -> bool {
+        if depth > 256 {
+            return false;
+        }
+        match &e.kind {
+            ExprKind::Call { name, args } => {
+                name.is("__QUERYINTERFACE")
+                    || name.is("__QUERYPOINTER")
+                    || args.iter().any(|a| in_expr(&a.value, depth + 1))
+            }
+            ExprKind::Unary { operand, .. } => in_expr(operand, depth + 1),
+            ExprKind::Binary { left, right, .. } => {
+                in_expr(left, depth + 1) || in_expr(right, depth + 1)
+            }
+            _ => false,
+        }
+    }
+    match &s.kind {
+        StmtKind::Assign { value, .. } => in_expr(value, 0),
+        StmtKind::Call { args, .. } => args.iter().any(|a| in_expr(&a.value, 0)),
+        k => k.control_exprs().iter().any(|e| in_expr(e, 0)),
+    }
+}
+
 /// `s` with its uses of interface variables rewritten (see the module documentation): the
 /// statements to lower instead, or `None` when `s` uses none in what it evaluates itself (nested
 /// statements are rewritten when they are lowered).
@@ -489,7 +519,11 @@ pub(super) fn rewrite(
 ) -> Option<(Vec<Stmt>, Vec<VarDecl>)> {
     let attempt =
         matches!(&s.kind, StmtKind::Assign { value, .. } if attempt_operand(value).is_some());
-    if env.decls.interfaces.is_empty() && env.decls.bases.is_empty() && !attempt {
+    if env.decls.interfaces.is_empty()
+        && env.decls.bases.is_empty()
+        && !attempt
+        && !queries_interface(s)
+    {
         return None;
     }
     let mut r = Rewriter {
@@ -516,6 +550,53 @@ impl Rewriter<'_, '_> {
 
     fn place_interface(&self, p: &Place) -> Option<&Interface> {
         self.interface(&self.env.place_type(p)?)
+    }
+
+    /// The type named in the declaration of the variable `p` starts with, when that type is
+    /// declared nowhere (no elementary type, type, POU or standard block): a vendor library's
+    /// interface ladderc does not have (`iEvt : I_BA_EventObject;` of Tc3_BA2).
+    fn undeclared_type(&self, p: &Place) -> Option<Ident> {
+        let PlaceBase::Name(n) = &p.base else {
+            return None;
+        };
+        let TypeRef::Named(t) = self.env.var_type(n)? else {
+            return None;
+        };
+        let known = crate::sema::model::Elementary::from_name(&t.name.to_ascii_uppercase())
+            .is_some()
+            || self.env.decls.type_decl(&t.name).is_some()
+            || self.env.decls.pou(&t.name).is_some()
+            || self.env.decls.interfaces.contains_key(&t.key())
+            || crate::sema::model::StdFb::from_name(&t.name).is_some();
+        (!known && !t.name.starts_with("__")).then_some(t)
+    }
+
+    /// A query whose operands' types (`missing`) are declared nowhere: those types are the one
+    /// cause, reported as sema reports them (E1003 at the declaration, once each:
+    /// [`Diagnostics::push`] drops sema's equal one, and none is added when sema's is there), not
+    /// the operator; the query reads FALSE (nothing else reported for it: no E1007 for an IF
+    /// whose condition it is). The E1003s are made here because sema does not run when the
+    /// lowering finds errors (as for a method chain on such a type, `lower::call_chain`).
+    fn missing_interfaces(&mut self, missing: &[Ident], span: Span) -> Option<Expr> {
+        for missing in missing {
+            let here = Some(missing.span);
+            if self
+                .diags
+                .iter()
+                .any(|d| d.code == code::E1003 && d.span == here)
+            {
+                continue;
+            }
+            self.diags.push(
+                Diagnostic::error(code::E1003, format!("unknown type `{}`", missing.name))
+                    .at(missing.span)
+                    .with_primary_label("no such type")
+                    .with_hint(
+                        "declare it in a TYPE block or as a FUNCTION_BLOCK, or use an elementary type",
+                    ),
+            );
+        }
+        Some(bool_lit(false, span))
     }
 
     fn expr_interface(&self, e: &Expr) -> Option<&Interface> {
@@ -1246,6 +1327,9 @@ impl Rewriter<'_, '_> {
             );
         };
         if pointer {
+            if let Some(missing) = self.undeclared_type(sp) {
+                return self.missing_interfaces(&[missing], span);
+            }
             let target = match self.env.place_type(dp).map(|t| self.env.resolve(&t)) {
                 Some(TypeRef::Ref { target, .. }) => match *target {
                     TypeRef::Named(n) => Some(n),
@@ -1289,6 +1373,13 @@ impl Rewriter<'_, '_> {
                 span,
             });
             return Some(place_expr(ok, span));
+        }
+        let missing: Vec<Ident> = [sp, dp]
+            .iter()
+            .filter_map(|p| self.undeclared_type(p))
+            .collect();
+        if !missing.is_empty() {
+            return self.missing_interfaces(&missing, span);
         }
         let Some(di) = self.place_interface(dp).cloned() else {
             return fail(

@@ -120,6 +120,20 @@ impl PouLowering<'_> {
                 |v: Vec<&String>| v.iter().map(|s| s.as_str()).collect::<Vec<_>>().join(", ");
             let hint = if inputs.is_empty() && outputs == 0 {
                 format!("{name} has no parameters: call it without arguments (`{name}()`)")
+            } else if outputs == 0 && args.len() < inputs.len() {
+                // (TwinCAT projects leave out trailing inputs that have initial values, guanda's
+                // `WStrConcat("a", b)` of 9: IEC 61131-3 ed. 2, 2.5.1.1, and ed. 3, 6.6.1.4.2,
+                // let only a formal call leave inputs out, and no Beckhoff or CODESYS page found
+                // says otherwise, so the error stays and says how to write it)
+                format!(
+                    "give its inputs in order: {}; or name the ones given (`{name}({} := ...)`): a formal call leaves the others at their initial values",
+                    list(inputs.clone()),
+                    inputs[..args.len()]
+                        .iter()
+                        .map(|s| s.as_str())
+                        .collect::<Vec<_>>()
+                        .join(" := ..., ")
+                )
             } else if outputs == 0 {
                 format!("give its inputs in order: {}", list(inputs.clone()))
             } else {
