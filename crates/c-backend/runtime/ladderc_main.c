@@ -4,7 +4,9 @@
  *        [--progress FILE] [--trace-raw]
  *
  * Input: the stimulus CSV (`cycle,variable,value` rows; the values are written just before that cycle
- * runs; an optional `cycle,variable,value` header, blank lines and `#` comment lines are ignored).
+ * runs; an optional `cycle,variable,value` header, blank lines and `#` comment lines are ignored; a
+ * variable is named as the trace header names it, `"m.grid[1,0]"` or `m.grid[1,0]`, and so is each name
+ * of --watch).
  * Output: the trace CSV (`cycle,time_ms,VAR...`, one row per cycle with the watched variables after it).
  * Progress (`--progress FILE`): about ten times a second of CPU time, the number of cycles done is written
  * at the start of FILE as 20 digits and a newline (the caller polls it for a progress bar); the clock is
@@ -55,7 +57,7 @@ static void usage(FILE *f) {
             "  --cycle-ms X     cycle time in milliseconds, may be fractional (default 10)\n"
             "  --stimulus FILE  CSV rows `cycle,variable,value` applied before that cycle\n"
             "  --trace FILE     CSV trace `cycle,time_ms,VAR...` after each cycle (default: standard output)\n"
-            "  --watch LIST     comma-separated variables or addresses to trace (default: every variable but the compiler's own `__` ones)\n"
+            "  --watch LIST     comma-separated variables or addresses to trace, `m.grid[1,0]` one name (default: every variable but the compiler's own `__` ones)\n"
             "  --list           print the watchable variables with their types and exit\n"
             "  --progress FILE  write the number of cycles done into FILE, about ten times a second\n"
             "  --trace-raw      REAL/LREAL values of the trace as raw bits, for ladderc run to format\n");
@@ -200,6 +202,51 @@ static char *read_file(const char *path, size_t *len_out) {
     return buf;
 }
 
+/* Cuts the next variable name off the comma-separated text at `p`, in place, as the trace header
+ * writes names: a field in double quotes may hold commas (`"m.grid[1,0]"`, `""` is one quote, RFC 4180);
+ * an unquoted field's commas inside `[...]` belong to it (`m.grid[1,0]`, IEC 61131-3's subscript list).
+ * Blanks around the name and inside a subscript list are dropped (`grid[1, 0]` is `grid[1,0]`).
+ * `*name` gets the name; returns the text after the comma that ends it, or NULL when the name ends the
+ * text (`*fault` then says whether a quote was left open). */
+static char *next_name(char *p, char **name, const char **fault) {
+    char *r = p, *w = p, *rest = NULL;
+    int quoted = 0, depth = 0;
+    *fault = NULL;
+    while (*r && isspace((unsigned char)*r)) r++;
+    *name = w;
+    if (*r == '"') {
+        quoted = 1;
+        r++;
+    }
+    for (; *r; r++) {
+        if (quoted == 1 && *r == '"') {
+            if (r[1] != '"') {
+                quoted = 2;
+                r++;
+                break;
+            }
+            r++;
+        } else if (*r == '[') {
+            depth++;
+        } else if (*r == ']' && depth > 0) {
+            depth--;
+        } else if (*r == ',' && depth == 0 && !quoted) {
+            break;
+        }
+        if (depth > 0 && isspace((unsigned char)*r)) continue;
+        *w++ = *r;
+    }
+    if (quoted == 1) *fault = "a quoted name has no closing `\"`";
+    if (quoted == 2) {
+        while (*r && isspace((unsigned char)*r)) r++;
+        if (*r && *r != ',') *fault = "text after a quoted name (write `\"name\",` or the name without quotes)";
+    }
+    if (*r == ',') rest = r + 1;
+    while (w > *name && isspace((unsigned char)w[-1])) w--;
+    *w = '\0';
+    return rest;
+}
+
 /* Parses the stimulus file into rows sorted by cycle (file order within a cycle). Returns -1 on error. */
 static int load_stimulus(const char *path, stimulus_row **rows_out, size_t *count_out) {
     size_t len, count = 0, cap = 0, lineno = 0;
@@ -214,6 +261,7 @@ static int load_stimulus(const char *path, stimulus_row **rows_out, size_t *coun
         memmove(text, text + 3, len - 2);
     for (line = text; line; line = next) {
         char *c1, *c2, *cycle_s, *name, *value, *end;
+        const char *fault = NULL;
         unsigned long long cycle;
         stimulus_row row;
         next = strchr(line, '\n');
@@ -222,16 +270,20 @@ static int load_stimulus(const char *path, stimulus_row **rows_out, size_t *coun
         if (strlen(line) && line[strlen(line) - 1] == '\r') line[strlen(line) - 1] = '\0';
         if (*trim(line) == '\0' || *trim(line) == '#') continue;
         c1 = strchr(line, ',');
-        c2 = c1 ? strchr(c1 + 1, ',') : NULL;
+        /* the name as the trace header writes it (quoted, or with a subscript list `grid[1,0]`);
+           the value is the rest of the line */
+        c2 = c1 ? next_name(c1 + 1, &name, &fault) : NULL;
+        if (fault) {
+            fprintf(stderr, "%s:%lu: %s\n", path, (unsigned long)lineno, fault);
+            goto bad;
+        }
         if (!c2) {
             fprintf(stderr, "%s:%lu: expected `cycle,variable,value`\n", path, (unsigned long)lineno);
             goto bad;
         }
         *c1 = '\0';
-        *c2 = '\0';
         cycle_s = trim(line);
-        name = trim(c1 + 1);
-        value = trim(c2 + 1);
+        value = trim(c2);
         if (ieq(cycle_s, "cycle") && ieq(name, "variable")) continue; /* header */
         errno = 0;
         cycle = strtoull(cycle_s, &end, 10);
@@ -574,9 +626,13 @@ int main(int argc, char **argv) {
         strcpy(copy, watch_list);
         for (tok = copy; tok; tok = save) {
             char *name;
-            save = strchr(tok, ',');
-            if (save) *save++ = '\0';
-            name = trim(tok);
+            const char *fault;
+            /* names as the trace header writes them: `m.grid[1,0]` is one name */
+            save = next_name(tok, &name, &fault);
+            if (fault) {
+                fprintf(stderr, "error: --watch: %s\n", fault);
+                return 2;
+            }
             if (!*name) continue;
             if (resolve(name, &watch[watch_count], err, sizeof err)) {
                 fprintf(stderr, "error: --watch: %s\n", err);

@@ -47,7 +47,9 @@ pub mod toolchain;
 pub use extensions::{Extensions, MethodFeedback, MethodLocal, PouMethod};
 pub use pipeline::{build_il, compile_il};
 pub use profile::{AddressUnit, BitNumbering, ByteOrder, Located, ProfileError, TargetProfile};
-pub use toolchain::{build, build_with, run, BuildError, BuildOptions, RunOptions, RunOutput};
+pub use toolchain::{
+    build, build_with, run, watch_names, BuildError, BuildOptions, RunOptions, RunOutput,
+};
 
 use diagnostics::Diagnostics;
 use il_frontend::ast::CompilationUnit;

@@ -219,6 +219,52 @@ impl RunOutput {
     }
 }
 
+/// The names of a `--watch` list, split at its commas as the harness splits it: a name in double
+/// quotes (as the trace header writes a name with a comma, `"m.grid[1,0]"`; `""` is one quote) and
+/// the commas of a subscript list (`m.grid[1,0]`) stay in one name; blanks around a name and inside
+/// its subscripts are dropped (`grid[1, 0]` is the trace's `grid[1,0]`), empty names are left out.
+pub fn watch_names(list: &str) -> Vec<String> {
+    let mut names = Vec::new();
+    let mut name = String::new();
+    let mut depth = 0usize;
+    let mut quoted = false;
+    let mut chars = list.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '"' if quoted && chars.peek() == Some(&'"') => {
+                chars.next();
+                name.push('"');
+                continue;
+            }
+            '"' if quoted => {
+                quoted = false;
+                continue;
+            }
+            '"' if name.trim().is_empty() => {
+                name.clear();
+                quoted = true;
+                continue;
+            }
+            '[' => depth += 1,
+            ']' => depth = depth.saturating_sub(1),
+            ',' if depth == 0 && !quoted => {
+                names.push(std::mem::take(&mut name));
+                continue;
+            }
+            _ => {}
+        }
+        if !(depth > 0 && c.is_whitespace()) {
+            name.push(c);
+        }
+    }
+    names.push(name);
+    names
+        .into_iter()
+        .map(|n| n.trim().to_string())
+        .filter(|n| !n.is_empty())
+        .collect()
+}
+
 /// The harness arguments for `opts` (`--cycles N --cycle-ms X ...`).
 pub fn run_args(opts: &RunOptions) -> Vec<String> {
     let mut args = vec![
@@ -256,4 +302,20 @@ pub fn run(exe: &Path, opts: &RunOptions) -> Result<RunOutput, BuildError> {
         stdout: String::from_utf8_lossy(&out.stdout).into_owned(),
         stderr: String::from_utf8_lossy(&out.stderr).into_owned(),
     })
+}
+
+#[cfg(test)]
+mod watch_list_tests {
+    use super::watch_names;
+
+    #[test]
+    fn subscript_lists_and_quoted_names_stay_whole() {
+        assert_eq!(
+            watch_names(r#"m.a, m.grid[1, 0] ,"m.grid[2,1]",,%QX0.1,"say ""hi""""#),
+            ["m.a", "m.grid[1,0]", "m.grid[2,1]", "%QX0.1", "say \"hi\""]
+        );
+        assert!(watch_names("").is_empty());
+        // an unclosed bracket keeps the rest in one name (the harness reports it unknown)
+        assert_eq!(watch_names("m.g[1,0,m.b"), ["m.g[1,0,m.b"]);
+    }
 }

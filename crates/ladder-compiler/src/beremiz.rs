@@ -11,7 +11,8 @@
 //! Input: the text of one confnode file (the caller reads the folder). Output: the declared globals as
 //! [`VarDecl`]s whose spans point into that file, and the span of the first code section that holds
 //! code (C or Python: it does not run in ladderc). Invariants: never panics on bad input; a variable
-//! that cannot be read is one located E0320 and is left out, the others are still returned.
+//! that cannot be read is one located E0320 and is left out, the others are still returned; a STRING
+//! variable's initial value without quotes is the text itself, as Beremiz quotes it.
 
 use crate::context::Ctx;
 use crate::values;
@@ -180,7 +181,16 @@ fn variable(ctx: &mut Ctx, v: &Element) -> Option<VarDecl> {
         None => None,
         Some(text) => {
             let ispan = ctx.attr_span(v, "initial");
-            match values::operand(text, ispan) {
+            // a STRING's value without quotes is the text itself: Beremiz adds the quotes
+            // (`PLCGenerator.ComputeValue`, which it applies to these configuration globals too:
+            // `initial="localhost"` is built as `host : STRING := 'localhost';`)
+            let as_written = match &ty {
+                TypeRef::String { wide, .. } => v
+                    .attr("initial")
+                    .and_then(|raw| values::string_as_written(raw, *wide, ispan)),
+                _ => None,
+            };
+            match as_written.or_else(|| values::operand(text, ispan)) {
                 Some(op) => Some(Initializer::Value(op)),
                 None => {
                     ctx.report(

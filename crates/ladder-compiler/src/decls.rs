@@ -327,18 +327,8 @@ fn value_element(ctx: &mut Ctx, v: &Element, ty: Option<&TypeRef>) -> Option<Ini
             if let Some(TypeRef::String { wide, .. }) = ty {
                 // a literal only in the type's own quotes; other text is the string itself, as
                 // Beremiz (OpenPLC Editor) generates it: `"1234"` for a STRING is `'"1234"'`
-                let t = text.trim();
-                if !t.starts_with(if *wide { '"' } else { '\'' }) {
-                    return Some(Initializer::Value(il_frontend::ast::Operand::literal(
-                        il_frontend::ast::Literal {
-                            kind: il_frontend::ast::LiteralKind::String {
-                                wide: *wide,
-                                value: text.to_string(),
-                            },
-                            type_prefix: None,
-                            span,
-                        },
-                    )));
+                if let Some(op) = values::string_as_written(text, *wide, span) {
+                    return Some(Initializer::Value(op));
                 }
             }
             // `ADR(x)` / `REF(x)` of a variable (CODESYS exports a declaration's `:= ADR(x)` so):

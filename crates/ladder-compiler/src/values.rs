@@ -11,6 +11,24 @@ use il_frontend::ast::{
 };
 use il_frontend::Span;
 
+/// A STRING (`wide`: WSTRING) variable's initial value as Beremiz generates it: text that does not
+/// start with its type's quote (`'`, `"` for WSTRING) is the string itself, to which Beremiz's
+/// `PLCGenerator.ComputeValue` adds the quotes (OpenPLC Editor writes `1234`, a Python file's
+/// confnode `localhost`); `None` for text in the type's quotes, a literal that [`operand`] reads.
+pub fn string_as_written(text: &str, wide: bool, span: Span) -> Option<Operand> {
+    if text.trim().starts_with(if wide { '"' } else { '\'' }) {
+        return None;
+    }
+    Some(Operand::literal(Literal {
+        kind: LiteralKind::String {
+            wide,
+            value: text.to_string(),
+        },
+        type_prefix: None,
+        span,
+    }))
+}
+
 /// Parses one operand: literal, direct address, `Type#value` enum value, or variable access.
 pub fn operand(text: &str, span: Span) -> Option<Operand> {
     let t = text.trim();

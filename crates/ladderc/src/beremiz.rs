@@ -1,5 +1,6 @@
 //! Beremiz project folders as inputs: `ladderc check|build|run DIR` (a folder holding `plc.xml`) or
-//! `DIR/plc.xml` beside a `beremiz.xml`.
+//! `DIR/plc.xml` beside a `beremiz.xml` (a bare `plc.xml` is `DIR` = the current folder: the same
+//! project whichever way the path is spelled).
 //!
 //! Input: an input path and the [`Session`] (its overlay and, when allowed, the file system). Output:
 //! the path of the project's `plc.xml`, and, once it is compiled, the globals its confnodes declare
@@ -53,12 +54,19 @@ pub fn add_confnodes(session: &mut Session, dir: &Path, unit: &mut CompilationUn
 fn confnode_dirs(session: &Session, dir: &Path) -> Vec<PathBuf> {
     let mut found: Vec<PathBuf> = Vec::new();
     if session.disk {
-        if let Ok(entries) = std::fs::read_dir(dir) {
+        // a bare `plc.xml` is in the current folder: its parent is the empty path, which the file
+        // system does not list; the confnodes keep the spelling of `dir` (`py_ext_0@py_ext/...`)
+        let listed = if dir.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            dir
+        };
+        if let Ok(entries) = std::fs::read_dir(listed) {
             found.extend(
                 entries
                     .filter_map(|e| e.ok())
                     .filter(|e| e.file_type().is_ok_and(|t| t.is_dir()))
-                    .map(|e| e.path()),
+                    .map(|e| dir.join(e.file_name())),
             );
         }
     }

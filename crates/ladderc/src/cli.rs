@@ -200,8 +200,9 @@ pub enum Command {
         /// `--trace`) writes it to standard output.
         #[arg(long)]
         trace: Option<PathBuf>,
-        /// Variables to trace (`main.count`, `inst.count`, `%QX0.1`), comma-separated.
-        #[arg(long, value_delimiter = ',')]
+        /// Variables to trace (`main.count`, `inst.count`, `%QX0.1`, `main.grid[1,0]`),
+        /// comma-separated (a subscript list's commas, and a name in double quotes, stay in one name).
+        #[arg(long)]
         watch: Vec<String>,
         /// Build with -fsanitize=address,undefined.
         #[arg(long)]
@@ -425,7 +426,10 @@ fn dispatch(cli: Cli) -> i32 {
                 cycle_ms: cycle_ms.unwrap_or(pipeline::DEFAULT_CYCLE_MS),
                 stimulus,
                 trace,
-                watch,
+                watch: watch
+                    .iter()
+                    .flat_map(|w| c_backend::watch_names(w))
+                    .collect(),
             };
             let pvt = pmac_pvt.map(|p| (p, pvt_ms));
             run_program(
