@@ -14,6 +14,7 @@
 pub mod beremiz;
 pub mod body;
 pub mod catalogue;
+pub(crate) mod codesys_cfc;
 pub mod codesys_v2;
 pub(crate) mod codesys_vla;
 pub mod context;

@@ -4,7 +4,8 @@
 //! Output: one `DataTypes` item for `<dataTypes>`, one `Pou` per `<pou>` (bodies lowered by
 //! [`crate::body`]), one `Configuration` per `<configuration>`; diagnostics for what cannot be read.
 //! Invariants: POUs keep their interface even when the body cannot be lowered (E3003/E3004), so callers
-//! are still checked; vendor data (`addData`, vendor elements) is skipped with one W3002 per file.
+//! are still checked; vendor data (`addData`, vendor elements) is skipped with one W3002 per file,
+//! except a CODESYS CFC body (E0321, [`crate::codesys_cfc`]).
 
 use crate::body;
 use crate::catalogue;
@@ -626,6 +627,8 @@ fn is_read_vendor_data(name: &str) -> bool {
 /// blocks it reads are searched for further vendor data inside them; an empty `<addData/>`, as
 /// CODESYS writes one after each method's interface, holds nothing to ignore).
 fn vendor_data(ctx: &mut Ctx, root: &Element) {
+    // a CODESYS CFC body is E0321 of its own (`codesys_cfc`), not ignored vendor data
+    let charts = crate::codesys_cfc::unread_charts(ctx, root);
     let mut found: Vec<&Element> = Vec::new();
     let mut ignored_name: Vec<(usize, &str)> = Vec::new();
     // (element, its parent's name)
@@ -647,6 +650,7 @@ fn vendor_data(ctx: &mut Ctx, root: &Element) {
                     } else if member_interface && name.ends_with("/accessmodifiers") {
                     } else if crate::codesys_vla::only_its_attributes(d) {
                         // a variable-length in-out's declaration (`codesys_vla`)
+                    } else if charts.contains(&d.tag_start()) {
                     } else if is_read_vendor_data(name) {
                         stack.push((d, c.name()));
                     } else {

@@ -61,6 +61,7 @@
 pub mod axes;
 pub mod axis_links;
 pub mod beremiz;
+pub mod binary_input;
 pub mod block_temps;
 pub mod br_edges;
 pub mod br_programs;

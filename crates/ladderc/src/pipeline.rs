@@ -5,7 +5,7 @@
 //! `-` standard input) and [`Options`]; every file is taken from [`Session::overlay`] first, and from the
 //! file system (and standard input) only when [`Session::disk`] allows it. Output: the source map, the
 //! diagnostics, and (when there are no errors) the lowered IL units and the C project.
-//! Stages: read (bytes decoded by [`crate::encoding`]: UTF-8, UTF-16, the XML declaration's encoding, else
+//! Stages: read (a file that is not text is one E1093, [`crate::binary_input`]; bytes decoded by [`crate::encoding`]: UTF-8, UTF-16, the XML declaration's encoding, else
 //! Windows-1252 with note W0305) -> parse (IL, ST) or read + lower ladder (XML) ([`Session::parse`]) -> semantic checks
 //! against the PLCopen block prelude and the axes ([`Session::check`]) -> parameter passing (block calls by
 //! the chosen strategy) ([`Session::lower_checked`]) -> semantic model of the lowered program -> C
@@ -395,6 +395,14 @@ impl Session {
             } else {
                 Err(not_in_memory())
             };
+            // a file that is not text (a binary CODESYS V3 `.project`, an archive): one E1093 at its start
+            if let Ok(Ok(b)) = &bytes {
+                if let Some(d) = crate::binary_input::not_text(p, b) {
+                    let file = self.map.add_file_owned(shown, String::new());
+                    self.diags.push(d.at(diagnostics::Span::new(file, 0, 0)));
+                    continue;
+                }
+            }
             // Ok(Ok(bytes)) from a file or standard input, Ok(Err(text)) from the overlay
             let decoded = match bytes {
                 Ok(Err(text)) => Ok(crate::encoding::Decoded {

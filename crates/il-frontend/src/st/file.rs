@@ -1635,6 +1635,11 @@ fn parse_text_as_read(
             diags.extend(local);
             return (unit, pending, Vec::new());
         }
+        // Siemens STL (`.awl`): one E0023 naming the dialect, not an error per line
+        if let Some(d) = super::siemens_stl::siemens_stl(file, src) {
+            diags.push(d);
+            return (CompilationUnit::default(), pending, Vec::new());
+        }
         first_try = Some((unit, local));
     }
     // `#ifdef X` ... `#else` ... `#endif` (B&R's preprocessor): the sections not compiled and the

@@ -1,6 +1,7 @@
 //! Structured Text (IEC 61131-3 ST), compiled through the IL syntax tree.
 //!
-//! A `.st` file in Siemens SCL is one E0023 before any stage (`scl`).
+//! A `.st` file in Siemens SCL is one E0023 before any stage (`scl`), so is an IL file in Siemens STL
+//! (`siemens_stl`).
 //! Stages: [`lexer`] (logos, case-insensitive keywords, the IL literal decoders) -> [`parser`]
 //! (recursive descent with IEC precedence and statement-level error recovery, codes E0100-E0139) ->
 //! [`ast`] -> [`lower`] (IL instructions with deferred operators, VAR_TEMP temporaries typed by
@@ -42,6 +43,7 @@ pub mod qualifiers;
 pub mod refs;
 mod scl;
 pub mod sfc;
+mod siemens_stl;
 mod stray_text;
 mod struct_extends;
 pub mod types;
