@@ -58,10 +58,14 @@ fn row(cells: &[&str]) -> Vec<String> {
 }
 
 #[test]
-fn parallel_coils_get_one_evaluation_and_a_contact_on_a_coil_sees_the_old_value() {
-    // Rung: (Start OR Motor) AND NOT Stop drives coils Motor and Lamp; a parallel branch reads Motor into
-    // WasRunning. A converter that re-evaluates the shared path per coil, or reads Motor after writing it,
-    // sets WasRunning in the very cycle Start is pressed.
+fn parallel_coils_get_one_evaluation_and_each_contact_reads_where_it_stands() {
+    // Rung: (Start OR Motor) AND NOT Stop drives coils Motor and Lamp; a parallel branch, fed by the
+    // seal-in contact Motor, reads Motor again into WasRunning. A converter that re-evaluates the shared
+    // path per coil sets WasRunning in the very cycle Start is pressed. The seal-in contact stands
+    // before the Motor coil (a feedback: the value from before the rung); the branch's own contact on
+    // Motor stands below the coil and reads what it wrote, as Beremiz generates it (round 30, before:
+    // the value from before the rung, so WasRunning stayed TRUE in the cycle Stop cleared Motor;
+    // `ld_r30_run.rs`).
     let rows = run(
         "parallel_coils.xml",
         "cycle,variable,value\n1,main.Start,1\n2,main.Start,0\n4,main.Stop,1\n5,main.Stop,0\n",
@@ -71,10 +75,10 @@ fn parallel_coils_get_one_evaluation_and_a_contact_on_a_coil_sees_the_old_value(
     );
     let want = [
         ["0", "0", "0"], // idle
-        ["1", "1", "0"], // Start pressed: Motor and Lamp on; WasRunning sees Motor from before the rung
+        ["1", "1", "0"], // Start pressed: Motor and Lamp on; the seal-in contact saw Motor from before
         ["1", "1", "1"], // sealed in
         ["1", "1", "1"],
-        ["0", "0", "1"], // Stop: both coils off in the same cycle; WasRunning still the old Motor
+        ["0", "0", "0"], // Stop: both coils off in the same cycle; the lower contact sees Motor off
         ["0", "0", "0"],
         ["0", "0", "0"],
     ];

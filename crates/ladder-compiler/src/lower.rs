@@ -9,9 +9,11 @@
 //!    its outputs; chained blocks in order), edge detectors are called, and every value used more than
 //!    once is stored in a temporary, so it is computed exactly once.
 //! 2. Phase 2 writes coils and output variables. Parallel coils fed by one power flow share a single
-//!    evaluation (`LD ...` then `ST a`, `ST b`). A write whose value reads a variable that an earlier
-//!    write of the same network changes is captured in phase 1, so every contact sees the value the
-//!    variable had before the rung.
+//!    evaluation (`LD ...` then `ST a`, `ST b`). A contact reads its variable where it stands in the
+//!    evaluation order (data flow, then top to bottom, left to right): one before a coil of its
+//!    variable (a feedback, a seal-in) sees the value from before the coil, one after it (a lower
+//!    rung sharing a contact with the coil's) sees what the coil wrote, as Beremiz generates it
+//!    (child module `lower_reads`).
 //! 3. Jumps and returns come last, with the same capture rule.
 //!
 //! Feedback loops must pass through an in-out variable (it reads the previous value); other loops are
@@ -53,6 +55,8 @@ mod lower_double;
 mod lower_emit;
 #[path = "lower_order.rs"]
 mod lower_order;
+#[path = "lower_reads.rs"]
+mod lower_reads;
 #[path = "lower_st.rs"]
 mod lower_st;
 use lower_order::{deps_map, kahn, net_deps};
@@ -87,6 +91,9 @@ struct Write {
     kind: WriteKind,
     val: ValId,
     span: Span,
+    /// The place of the writing element in the network's evaluation order (see
+    /// [`NetLowering::pos`]).
+    at: usize,
     /// An output variable wired to the result of a function box called under EN: the box's ENO and
     /// the label after the write. The write is skipped when ENO is FALSE, so the variable keeps its
     /// value (see [`NetLowering::en_results`]).
@@ -114,8 +121,8 @@ enum Action {
         inst: VarRef,
         args: Vec<(Ident, ValId)>,
         en: Option<ValId>,
-        /// A standard FB: EN is passed as the call's `EN :=` (the instance's ENO then follows it);
-        /// other blocks are called conditionally (`CALC`).
+        /// A standard or user FB: EN is passed as the call's `EN :=` (the instance's ENO then
+        /// follows it); other blocks (motion) are called conditionally (`CALC`).
         en_arg: bool,
         span: Span,
     },
@@ -661,6 +668,11 @@ struct NetLowering<'a, 'i> {
     used: HashMap<String, usize>,
     /// Per value: how deeply its operands nest (a leaf is 0).
     depth: Vec<usize>,
+    /// Per value: the place, in the network's evaluation order, of the element that made it (a
+    /// contact's read of its variable happens there: see `lower_reads`).
+    pos: Vec<usize>,
+    /// The place of the element being built.
+    cur_pos: usize,
     /// The first value that would have nested deeper than [`MAX_VALUE_DEPTH`] (reported as E3200).
     too_deep: Option<Span>,
     /// The result values (as read from the box's output pins, negated or not) of function boxes
@@ -699,6 +711,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             controls: Vec::new(),
             used: HashMap::default(),
             depth: Vec::new(),
+            pos: Vec::new(),
+            cur_pos: 0,
             too_deep: None,
             en_results: HashMap::default(),
             guards: HashSet::default(),
@@ -729,6 +743,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         self.controls.clear();
         self.used.clear();
         self.depth.clear();
+        self.pos.clear();
+        self.cur_pos = 0;
         self.too_deep = None;
         self.en_results.clear();
         self.guards.clear();
@@ -895,6 +911,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             (v, d)
         };
         self.depth.push(d);
+        self.pos.push(self.cur_pos);
         self.vals.push(v);
         self.spans.push(span);
         self.temps.push(None);
@@ -1157,7 +1174,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         op: &Operand,
         span: Span,
         what: std::fmt::Arguments,
-    ) {
+    ) -> bool {
         if let Some(f) = self.operand_family(op) {
             if f != Family::Bool {
                 let ty = self.operand_ty(op);
@@ -1170,8 +1187,10 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 )
                 .with_hint("contacts and coils take BOOL variables: use a compare block for other types");
                 ctx.report(d);
+                return false;
             }
         }
+        true
     }
 
     fn trig(&mut self, name: String, falling: bool, clk: ValId, span: Span) -> ValId {
@@ -1213,7 +1232,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
     // ------------------------------------------------------------ building
 
     fn build(&mut self, ctx: &mut Ctx, order: &[usize]) {
-        for &i in order {
+        for (k, &i) in order.iter().enumerate() {
+            self.cur_pos = k;
             self.build_node(ctx, i);
             self.built.insert(i);
         }
@@ -1290,8 +1310,13 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     self.poisoned.insert(i);
                     return;
                 };
-                self.check_var_bool(ctx, i, &op, *var_span, format_args!("contact `{var}`:"));
+                let bool_var =
+                    self.check_var_bool(ctx, i, &op, *var_span, format_args!("contact `{var}`:"));
                 let leaf = match edge {
+                    // A contact passes BOOL power flow whatever its variable (IEC 61131-3 ed. 2
+                    // 4.2.3): on a variable that is no BOOL (reported above, once) it passes FALSE,
+                    // so the coil it feeds gets no second error naming a type that flows nowhere
+                    _ if !bool_var => self.val(Val::Const(false), span),
                     Edge::None => self.val(Val::Leaf { op, neg: *negated }, span),
                     e => {
                         let read = self.val(Val::Leaf { op, neg: false }, span);
@@ -1359,6 +1384,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     kind,
                     val,
                     span,
+                    at: self.cur_pos,
                     guard: None,
                 });
             }
@@ -1401,6 +1427,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     kind: WriteKind::St { neg: *negated },
                     val: v,
                     span,
+                    at: self.cur_pos,
                     guard,
                 });
             }
@@ -1423,6 +1450,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                             kind: WriteKind::St { neg: *negated_in },
                             val: v,
                             span,
+                            at: self.cur_pos,
                             guard,
                         });
                         if *negated_in {

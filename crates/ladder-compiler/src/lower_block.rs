@@ -269,7 +269,13 @@ impl NetLowering<'_, '_> {
                     inst: inst.clone(),
                     args: args.clone(),
                     en,
-                    en_arg: matches!(bt, BlockType::StdFb(_)),
+                    // EN is the call's `EN :=` for standard and user blocks alike, so a box whose
+                    // EN is FALSE leaves the instance's ENO FALSE (IEC 61131-3 ed. 2 2.5.1.2, ed. 3
+                    // 6.6.1.6: EN FALSE, the body is not executed and ENO is FALSE; matiec's FB bodies
+                    // start `if (!EN) { ENO = FALSE; return; }`), as the same call in ST does: a
+                    // contact on `inst.ENO` then reads FALSE (before round 30: TRUE from the last
+                    // call that ran, `tests/tests/ld_r30_run.rs`)
+                    en_arg: matches!(bt, BlockType::StdFb(_) | BlockType::UserFb(_)),
                     span,
                 });
                 for out in outputs {

@@ -1,6 +1,7 @@
 //! Emission, for [`super`]: the values of one lowered network become IL statements: values used more
-//! than once stored in temporaries, phase 1 (blocks, edge detectors, captured values), phase 2 (coil and
-//! output writes sharing one evaluation), then jumps and returns ([`NetLowering::emit`]).
+//! than once stored in temporaries, phase 1 (blocks, edge detectors, shared values), phase 2 (coil and
+//! output writes sharing one evaluation, each contact read where it stands: `lower_reads`), then jumps
+//! and returns ([`NetLowering::emit`]).
 //!
 //! Input: the network's value table and actions, built by [`super`]. Output: IL statements appended to
 //! the body. Invariants: every value is computed exactly once per network; every statement carries the
@@ -228,32 +229,6 @@ impl NetLowering<'_, '_> {
         ));
     }
 
-    /// Variables (base names, upper-cased) that evaluating `v` reads, stopping at stored values.
-    pub(super) fn reads(&self, v: ValId, acc: &mut HashSet<String>) {
-        if self.temps[v].is_some() {
-            return;
-        }
-        match &self.vals[v] {
-            Val::Leaf {
-                op: Operand::Var(r),
-                ..
-            } => {
-                acc.insert(r.base.key());
-            }
-            Val::Leaf {
-                op: Operand::Address(a),
-                ..
-            } => {
-                acc.insert(address_key(a));
-            }
-            _ => {
-                for c in self.children(v) {
-                    self.reads(c, acc);
-                }
-            }
-        }
-    }
-
     pub(super) fn emit(&mut self, out: &mut Vec<IlStmt>) {
         self.count_uses();
         let mut actions = std::mem::take(&mut self.actions);
@@ -347,32 +322,26 @@ impl NetLowering<'_, '_> {
                 Control::Jump(_, v, _) | Control::Return(v, _) => finals.push(*v),
             }
         }
-        for &v in &finals {
+        // A contact reads its variable where it stands in the network (`lower_reads`): a value
+        // that reads what an earlier group wrote is evaluated where it is written.
+        let times = self.read_times(&groups, &finals);
+        for (&v, &late) in finals.iter().zip(&times.late) {
+            if late {
+                continue;
+            }
             self.prepare(v, out);
             if self.uses[v] > 1 && !self.is_trivial(v) {
                 self.materialise(v, out);
             }
         }
-        // A value read after an earlier group's write is captured first. Nothing is written before
-        // the first value, and the last group's targets are read by nothing after it: the usual
-        // one-write rung needs no sets at all.
-        let mut written: HashSet<String> = HashSet::default();
-        for (gi, &v) in finals.iter().enumerate() {
-            if !written.is_empty() {
-                let mut rd = HashSet::default();
-                self.reads(v, &mut rd);
-                if !rd.is_disjoint(&written) {
-                    self.materialise(v, out);
-                }
-            }
-            if gi + 1 < finals.len() {
-                if let Some((r, _)) = groups.get(gi) {
-                    written.extend(self.writes[r.clone()].iter().map(|w| target_key(&w.target)));
-                }
-            }
-        }
         // Phase 2: write.
-        for (r, v) in &groups {
+        for (gi, (r, v)) in groups.iter().enumerate() {
+            // a later group reads these contacts with the value before this write
+            if let Some(captures) = times.captures.get(gi) {
+                for &l in captures {
+                    self.materialise(l, out);
+                }
+            }
             // a write of a function box's result under EN: skipped when the box did not run
             let guard = self.writes[r.start].guard.clone();
             let span = self.writes[r.start].span;
@@ -385,6 +354,10 @@ impl NetLowering<'_, '_> {
                     },
                     span,
                 ));
+            }
+            self.prepare(*v, out);
+            if self.uses[*v] > 1 && !self.is_trivial(*v) {
+                self.materialise(*v, out);
             }
             self.eval(*v, out);
             for w in &self.writes[r.clone()] {
@@ -400,6 +373,13 @@ impl NetLowering<'_, '_> {
             }
         }
         // Phase 3: jumps and returns.
+        let controls = std::mem::take(&mut self.controls);
+        for c in &controls {
+            match c {
+                Control::Jump(_, v, _) | Control::Return(v, _) => self.prepare(*v, out),
+            }
+        }
+        self.controls = controls;
         for c in &self.controls {
             match c {
                 Control::Jump(label, v, span) => {

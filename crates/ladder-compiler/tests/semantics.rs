@@ -17,7 +17,7 @@ fn pos(ls: &[&str], line: &str) -> usize {
 }
 
 #[test]
-fn parallel_coils_share_one_evaluation_and_contacts_see_old_values() {
+fn parallel_coils_share_one_evaluation_and_contacts_read_where_they_stand() {
     let (unit, diags) = compile("parallel_coils.xml", &fixture("parallel_coils.xml"));
     assert_eq!(diags, "");
     let il = dump_unit(&unit);
@@ -28,12 +28,16 @@ fn parallel_coils_share_one_evaluation_and_contacts_see_old_values() {
     let st_motor = pos(&ls, "ST Motor");
     assert_eq!(ls[st_motor + 1], "ST Lamp", "{il}");
     assert_eq!(ls[st_motor - 1], "ANDN Stop", "{il}");
-    // The branch that reads Motor (after the seal-in contact) was captured before Motor was written.
-    let capture = pos(&ls, "AND Motor");
+    // The seal-in contact (before the Motor coil, shared with the branch below) is captured before
+    // Motor is written; the branch's own contact on Motor (below the coil) reads what it wrote
+    // (round 30: each contact reads its variable where it stands, as Beremiz generates it).
+    let capture = pos(&ls, "LD Motor");
     assert!(capture < st_motor, "{il}");
     assert!(ls[capture + 1].starts_with("ST __tmp_BOOL_"), "{il}");
     let was = pos(&ls, "ST WasRunning");
-    assert_eq!(ls[was - 1], format!("LD {}", &ls[capture + 1][3..]), "{il}");
+    assert!(was > st_motor, "{il}");
+    assert_eq!(ls[was - 1], "AND Motor", "{il}");
+    assert_eq!(ls[was - 2], format!("LD {}", &ls[capture + 1][3..]), "{il}");
     insta::assert_snapshot!(il);
 }
 
