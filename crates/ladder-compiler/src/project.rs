@@ -5,7 +5,7 @@
 //! [`crate::body`]), one `Configuration` per `<configuration>`; diagnostics for what cannot be read.
 //! Invariants: POUs keep their interface even when the body cannot be lowered (E3003/E3004), so callers
 //! are still checked; vendor data (`addData`, vendor elements) is skipped with one W3002 per file,
-//! except a CODESYS CFC body (E0321, [`crate::codesys_cfc`]).
+//! except a CODESYS CFC body (E0321, `codesys_cfc`).
 
 use crate::body;
 use crate::catalogue;

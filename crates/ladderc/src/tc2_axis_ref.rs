@@ -6,7 +6,7 @@
 //! MC_ReadActualVelocity instances that the body calls first in every scan; one located E1042
 //! per member with no counterpart (a `Status.` / `NcToPlc.` field ladderc has no value for,
 //! `PlcToNc` and `ADS` with any member, `NcToPlc` / `Status` read whole), a store into one left
-//! out ([`no_store`]). Invariants: only variables the POU declares as `AXIS_REF` (or as
+//! out (`no_store`). Invariants: only variables the POU declares as `AXIS_REF` (or as
 //! structures, or function block instances with an `AXIS_REF` output, holding one:
 //! [`axis_holders`]) are touched; the hidden names start with `__TC2_` (a user cannot write them).
 //!

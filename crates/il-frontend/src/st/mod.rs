@@ -29,7 +29,7 @@ mod hash_directives;
 pub mod implicit_enums;
 pub mod infer;
 pub mod inherit;
-pub mod init_fields;
+pub(crate) mod init_fields;
 pub mod interface_vars;
 pub mod lexer;
 mod list_bounds;
