@@ -29,6 +29,26 @@ fn errors(src: &str) -> Vec<String> {
         .collect()
 }
 
+/// Beckhoff-JP/GearDemo's pattern (`FutureMCStopCreator.destroy_future`): the operand of
+/// `__QUERYPOINTER` is of an interface named through a library that is not given
+/// (`jobmgmt.InterfaceFuture`): that library's E1032 is the one cause. Found by round 30's
+/// side-by-side figures: the first version of the rewrite above gave an E0341 at each of the
+/// project's 12 queries besides it (before round 30: an E1019 "unknown function").
+#[test]
+fn querypointer_on_a_library_qualified_interface_is_the_librarys_error_only() {
+    let src = "FUNCTION_BLOCK FutureStop\nVAR\n    n : INT;\nEND_VAR\nEND_FUNCTION_BLOCK\n\n\
+FUNCTION_BLOCK Creator\nMETHOD destroy_future : BOOL\nVAR_INPUT\n    future : jobmgmt.InterfaceFuture;\n\
+END_VAR\nVAR\n    p : POINTER TO FutureStop;\nEND_VAR\nIF __QUERYPOINTER(future, p) THEN\n\
+    destroy_future := TRUE;\nEND_IF\nEND_METHOD\nEND_FUNCTION_BLOCK\n\n\
+PROGRAM main\nVAR\n    c : Creator;\nEND_VAR\nEND_PROGRAM\n";
+    let errs = errors(src);
+    assert_eq!(errs.len(), 1, "{errs:?}");
+    assert!(
+        errs[0].contains("app.st:10:14: error[E1032]") && errs[0].contains("`jobmgmt`"),
+        "{errs:?}"
+    );
+}
+
 /// TF8040's pattern (`F_AcknowledgeEventClass`): both operands of `__QUERYINTERFACE` are of
 /// interfaces of a library that is not given, in a project that declares no interface. Before:
 /// the two E1003 and E1019 "unknown function `__QUERYINTERFACE`" (a cascade: ladderc has the

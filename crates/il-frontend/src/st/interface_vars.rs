@@ -568,7 +568,9 @@ impl Rewriter<'_, '_> {
             || self.env.decls.pou(&t.name).is_some()
             || self.env.decls.interfaces.contains_key(&t.key())
             || crate::sema::model::StdFb::from_name(&t.name).is_some();
-        (!known && !t.name.starts_with("__")).then_some(t)
+        // (a `__` name is a library-qualified type whose library was reported, E1032: unknown
+        // too, and already said)
+        (!known).then_some(t)
     }
 
     /// A query whose operands' types (`missing`) are declared nowhere: those types are the one
@@ -580,10 +582,21 @@ impl Rewriter<'_, '_> {
     fn missing_interfaces(&mut self, missing: &[Ident], span: Span) -> Option<Expr> {
         for missing in missing {
             let here = Some(missing.span);
-            if self
-                .diags
-                .iter()
-                .any(|d| d.code == code::E1003 && d.span == here)
+            // an error already made at the type's name (its E1003, or the E1032 of the library
+            // that qualifies it, `jobmgmt.InterfaceFuture`) is the one cause
+            let at_name = |d: &Diagnostic| {
+                d.severity == diagnostics::Severity::Error
+                    && d.span.is_some_and(|s| {
+                        s.file == missing.span.file
+                            && s.start >= missing.span.start
+                            && s.start <= missing.span.end
+                    })
+            };
+            if missing.name.starts_with("__")
+                || self
+                    .diags
+                    .iter()
+                    .any(|d| d.code == code::E1003 && d.span == here || at_name(d))
             {
                 continue;
             }
