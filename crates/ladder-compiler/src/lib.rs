@@ -85,6 +85,11 @@ pub fn compile_xml_with_var_config(
         );
     }
     match root {
+        // XML 1.0, 1.2 "fatal error": after one, a processor does not pass the document's content on
+        // in the normal way. What was read up to the break is cut (an ST body ends mid-statement at an
+        // unescaped `<`): its errors would be follow-ons of E3001, so nothing of it is read. (A
+        // document that stopped before its first element has nothing to read either.)
+        _ if malformed => (ast::CompilationUnit::default(), Vec::new(), Vec::new()),
         Some(r) => {
             let mut unit = project::read_project(&mut ctx, &r);
             unit.items.extend(
@@ -100,8 +105,6 @@ pub fn compile_xml_with_var_config(
                 std::mem::take(&mut ctx.pending),
             )
         }
-        // the document stopped before its first element: E3001 said why (one error)
-        None if malformed => (ast::CompilationUnit::default(), Vec::new(), Vec::new()),
         None => {
             let span = ctx.span(0, 0);
             ctx.error(

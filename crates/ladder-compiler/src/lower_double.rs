@@ -2,7 +2,9 @@
 //! for [`super`].
 //!
 //! Input: the body's [`Graph`]. Output: warnings only, the lowering is unchanged. W3400 when two
-//! networks write the variable (the later network wins every scan); W1423 when two writers of one
+//! networks write the variable and no network from the first writer's next one up to the second
+//! writer's own reads it (the later network wins every scan; a read between, or a read-modify-write
+//! `X := X + 1` in the later network, makes the first write count); W1423 when two writers of one
 //! network do (the one written last in the network's write order wins every scan, the other never
 //! shows). Invariants: set and reset coils are never counted (latching from several rungs is their
 //! use); a function box's result under EN is not counted (written only when the box runs); two
@@ -71,13 +73,49 @@ fn same_power_flow(g: &Graph, a: usize, b: usize) -> bool {
         || sa.iter().all(|(from, _)| *from == b) && !sa.is_empty()
 }
 
+/// What element `i` reads, blanks dropped and upper-cased: a contact's variable, an input or in-out
+/// variable's expression (`Sequence = 1`, `X`); `None` for an element that reads no variable by
+/// name.
+fn read_text(g: &Graph, i: usize) -> Option<String> {
+    let text = match &g.nodes[i].kind {
+        Kind::Contact { var, .. } => var,
+        Kind::InVar { expr, .. } | Kind::InOutVar { expr, .. } => expr,
+        _ => return None,
+    };
+    Some(
+        text.chars()
+            .filter(|c| !c.is_whitespace())
+            .map(|c| c.to_ascii_uppercase())
+            .collect(),
+    )
+}
+
+/// Whether `text` (blanks dropped, upper case) names the variable `key` (same form) as a whole
+/// name: not as part of a longer identifier or as a member of another variable (`X` is in `X+1`,
+/// `X.Q` and `A[X]`, not in `MAX` or `FB.X`).
+fn mentions(text: &str, key: &str) -> bool {
+    let name_char = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '%' || c == '#';
+    text.match_indices(key).any(|(at, _)| {
+        let before = text[..at].chars().next_back();
+        let after = text[at + key.len()..].chars().next();
+        !before.is_some_and(|c| name_char(c) || c == '.') && !after.is_some_and(name_char)
+    })
+}
+
 impl BodyLowering<'_> {
     /// W3400 when one variable (or %Q address) is assigned by plain coils or output variables of two
     /// networks: the later network silently overrides the earlier one every scan ("double coil").
     /// Set/reset coils are left alone (latching from several rungs is the normal use).
     pub(super) fn check_double_writes(&self, ctx: &mut Ctx, g: &Graph) {
+        // the last plain writer of each variable so far: (network, node)
         let mut first: HashMap<String, (usize, usize)> = HashMap::default();
         let mut warned: HashSet<String> = HashSet::default();
+        // what each network reads (contacts, input and in-out variables), blanks dropped, upper case
+        let reads: Vec<Vec<String>> = g
+            .networks
+            .iter()
+            .map(|nodes| nodes.iter().filter_map(|&i| read_text(g, i)).collect())
+            .collect();
         for (net, nodes) in g.networks.iter().enumerate() {
             for &i in nodes {
                 let (var, span) = match &g.nodes[i].kind {
@@ -107,6 +145,19 @@ impl BodyLowering<'_> {
                 }
                 match first.get(&key) {
                     None => {
+                        first.insert(key, (net, i));
+                    }
+                    // a network after the first writer (the second writer's own included) reads
+                    // the value: the first write is seen (a chain `X := X + 1`, then `X := X * 2`,
+                    // as IEC 61131-3 runs networks in order); the later writer is now the one to
+                    // compare with
+                    Some(&(n0, _))
+                        if n0 != net
+                            && reads[n0 + 1..=net]
+                                .iter()
+                                .flatten()
+                                .any(|text| mentions(text, &key)) =>
+                    {
                         first.insert(key, (net, i));
                     }
                     Some(&(n0, i0)) if n0 != net && !warned.contains(&key) => {
