@@ -283,8 +283,9 @@ fn errors_of(dir: &std::path::Path, file: &str) -> Vec<String> {
 
 /// B2 (zhaoshutao/HEPSPLC `LeftTopLin.NcToPlc`, TC_XboxController `Axis.PlcToNc.Override`):
 /// Tc2_MC2's AXIS_REF members that ladderc's simulated axis has no value for are one E1042 each,
-/// at the member: `NcToPlc` and `Status` read whole, `PlcToNc.Override` read and written; the
-/// store is left out (no follow-on W1001). `NcToPlc.ActPos` next to them stays accepted. Before:
+/// at the member: `NcToPlc` and `Status` read whole, `PlcToNc.AxisModeRequest` read and written; the
+/// store is left out (no follow-on W1001). `NcToPlc.ActPos` next to them stays accepted (and, since
+/// round 31, `PlcToNc.Override`: `tc_r31_run.rs`; here `PlcToNc.AxisModeRequest`). Before:
 /// E1021 "AXIS_REF has no field `NcToPlc`" / `PlcToNc`, with the false hint "fields of AXIS_REF:
 /// AxisNo".
 #[test]
@@ -303,8 +304,8 @@ VAR
 END_VAR
 n := SIZEOF(ax.NcToPlc);
 f := ax.NcToPlc.ActPos;
-o := ax.PlcToNc.Override;
-ax.PlcToNc.Override := 500000;
+o := ax.PlcToNc.AxisModeRequest;
+ax.PlcToNc.AxisModeRequest := 5;
 b := TRUE;
 b := ax.Status;
 END_PROGRAM
@@ -320,8 +321,8 @@ END_PROGRAM
         lines,
         [
             "whole.st:9:16: error[E1042]: AXIS_REF's `NcToPlc` has no counterpart in ladderc's simulated axis",
-            "whole.st:11:9: error[E1042]: AXIS_REF's `PlcToNc.Override` has no counterpart in ladderc's simulated axis",
-            "whole.st:12:4: error[E1042]: AXIS_REF's `PlcToNc.Override` has no counterpart in ladderc's simulated axis",
+            "whole.st:11:9: error[E1042]: AXIS_REF's `PlcToNc.AxisModeRequest` has no counterpart in ladderc's simulated axis",
+            "whole.st:12:4: error[E1042]: AXIS_REF's `PlcToNc.AxisModeRequest` has no counterpart in ladderc's simulated axis",
             "whole.st:14:9: error[E1042]: AXIS_REF's `Status` has no counterpart in ladderc's simulated axis",
         ],
     );

@@ -23,7 +23,8 @@
 //! Invariants: never panics; an element, call kind, EN/ENO box, explicit execution order or
 //! feedback loop ladderc does not read is one E0325 at the element, an open input of an operator or
 //! an operand that is not one ST operand one E0326; nothing is dropped silently (comments are the
-//! only elements not lowered).
+//! only elements not lowered). A function block box whose instance is `SUPER^` is the call of the
+//! base block's body: its inputs (the instance's own) assigned, then `SUPER^()`.
 
 use crate::twincat_nwl::{check_name, prop, string, tok, wrap, NwlBody, Tok};
 use crate::xml::Element;
@@ -397,15 +398,25 @@ impl Chart<'_, '_, '_, '_> {
                             "{instance}.{}",
                             type_name.rsplit('.').next().unwrap_or_default()
                         ),
+                        // a box whose instance is `SUPER^` (TF8040's templates: the base
+                        // block's type, `FB_BA_View`, over `SUPER^`) is the call of the base's
+                        // body, `SUPER^(...)`, as in ST (Beckhoff Infosys, TC3 PLC, "SUPER":
+                        // "SUPER^() calls the body of the base function block")
+                        _ if is_super(instance) => "SUPER^".to_string(),
                         _ => instance.clone(),
                     };
-                    if check_name(&callee).is_err() {
+                    if callee != "SUPER^" && check_name(&callee).is_err() {
                         return Err((self.err)(
                             code::E0326,
                             node.el,
                             format!("box `{type_name}` does not name its instance or program (`{callee}`)"),
                         ));
                     }
+                    // `SUPER^`'s inputs are the instance's own: written before the call of the
+                    // base's body, `nStep := x; SUPER^();` (the inputs an FB call passes are
+                    // assigned before its body runs, IEC 61131-3 ed. 3, 6.6.1.9)
+                    let to_super = callee == "SUPER^";
+                    let mut assigned = Vec::new();
                     let mut call_toks = vec![tok(&callee, at), tok("(", at)];
                     let mut first = true;
                     for (j, p) in inputs.iter().enumerate() {
@@ -425,6 +436,13 @@ impl Chart<'_, '_, '_, '_> {
                         }
                         let v =
                             self.input(p, node.el, &format!("input `{name}` of `{type_name}`"))?;
+                        if to_super {
+                            assigned.push(tok(&name, at));
+                            assigned.push(tok(":=", at));
+                            assigned.extend(v);
+                            assigned.push(tok(";", at));
+                            continue;
+                        }
                         if !first {
                             call_toks.push(tok(",", at));
                         }
@@ -438,6 +456,7 @@ impl Chart<'_, '_, '_, '_> {
                     }
                     call_toks.push(tok(")", at));
                     call_toks.push(tok(";", at));
+                    self.toks.extend(assigned);
                     self.toks.extend(call_toks);
                     Ok(())
                 }
@@ -675,4 +694,11 @@ fn bounds(el: &Element) -> (i64, i64) {
     let x = n.next().unwrap_or(0);
     let y = n.next().unwrap_or(0);
     (y, x)
+}
+
+/// A box's instance text `SUPER^` (any case, blanks around it): the box calls the base block's
+/// body.
+fn is_super(instance: &str) -> bool {
+    let t: String = instance.chars().filter(|c| !c.is_whitespace()).collect();
+    t.eq_ignore_ascii_case("SUPER^")
 }

@@ -418,6 +418,16 @@ impl AxisConfig {
             }
             // Tc2_MC2's `Status.Homed` per axis: not homed at the start (crate::tc2_blocks)
             let _ = writeln!(s, "    __TC2_HOMED : ARRAY [0..{}] OF BOOL;", n - 1);
+            // Tc2_MC2's `PlcToNc.Override` per axis (UDINT, 1000000 = 100 %): what the program
+            // last wrote into it, 100 % at the start as the NC's override; the last entry,
+            // `__TC2_NO_AXIS`, is what an unbound `REFERENCE TO AXIS_REF` reads: 0, never
+            // written (crate::tc2_axis_ref)
+            let _ = writeln!(
+                s,
+                "    __TC2_OVERRIDE : ARRAY [0..{n}] OF UDINT := [{}, 0];",
+                vec!["1000000"; n].join(", ")
+            );
+            let _ = writeln!(s, "    __TC2_NO_AXIS : UDINT := {n};");
             // `NcToPlc.AxisId`: the NC axis's Id, else the axis's place in the file from 1
             let mut ids: Vec<String> = (self.axes.iter().enumerate())
                 .map(|(i, a)| a.nc_id.unwrap_or(i as u32 + 1).to_string())

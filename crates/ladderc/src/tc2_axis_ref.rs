@@ -3,12 +3,16 @@
 //! Input: one POU's variables and body (IL, before the semantic checks). Output: the body with
 //! `Axis.ReadStatus()` (and `Axis();`, a call of the AXIS_REF block itself) a call of a hidden MC_ReadStatus instance, `Axis.Status.<field>` and
 //! `Axis.NcToPlc.<field>` reads of hidden MC_ReadStatus / MC_ReadActualPosition /
-//! MC_ReadActualVelocity instances that the body calls first in every scan; one located E1042
-//! per member with no counterpart (a `Status.` / `NcToPlc.` field ladderc has no value for,
-//! `PlcToNc` and `ADS` with any member, `NcToPlc` / `Status` read whole), a store into one left
-//! out (`no_store`). Invariants: only variables the POU declares as `AXIS_REF` (or as
+//! MC_ReadActualVelocity instances that the body calls first in every scan; `Axis.PlcToNc.
+//! Override` the axes' table `__TC2_OVERRIDE` by `AxisNo`, a store into it also a hidden
+//! MC_SetOverride call; one located E1042 per member with no counterpart (a `Status.` /
+//! `NcToPlc.` field ladderc has no value for, `PlcToNc` with another member, `ADS`, `NcToPlc` /
+//! `Status` read whole), a store into one left out (`no_store`). Invariants: only variables the
+//! POU declares as `AXIS_REF`, as a `REFERENCE TO` / `POINTER TO` / `REF_TO AXIS_REF` (or as
 //! structures, or function block instances with an `AXIS_REF` output, holding one:
-//! [`axis_holders`]) are touched; the hidden names start with `__TC2_` (a user cannot write them).
+//! [`axis_holders`]) are touched; the hidden names start with `__TC2_` (a user cannot write them);
+//! an axis behind a reference is read only while the reference is bound (no NULL is
+//! dereferenced: [`Used::guarded`]); its members read 0 / FALSE until it is first bound.
 //!
 //! Per Infosys (Tc2_MC2 > AXIS_REF, ST_AxisStatus, NCTOPLC_AXIS_REF): `NcToPlc` is updated by the
 //! NC every cycle, `Status` by `ReadStatus()`. Here both are refreshed at the start of the POU's
@@ -103,7 +107,8 @@ const NC_TO_PLC: &[(&str, bool)] = &[
 ];
 
 /// The members of a Tc2_MC2 `AXIS_REF` ladderc reads, as (name, type) for the language server's
-/// completion: after `Axis.` (`group` None) `ReadStatus`, `Status`, `NcToPlc`; after
+/// completion: after `Axis.` (`group` None) `ReadStatus`, `Status`, `NcToPlc`, `PlcToNc` (its
+/// `Override`); after
 /// `Axis.Status.` the ST_AxisStatus fields; after `Axis.NcToPlc.` the positions and velocities.
 pub fn members(group: Option<&str>) -> Vec<(String, String)> {
     let pair = |n: &str, t: &str| (n.to_string(), t.to_string());
@@ -112,7 +117,9 @@ pub fn members(group: Option<&str>) -> Vec<(String, String)> {
             pair("ReadStatus", "method (Tc2_MC2): refreshes Status"),
             pair("Status", "ST_AxisStatus (Tc2_MC2)"),
             pair("NcToPlc", "NCTOPLC_AXIS_REF (Tc2_MC2)"),
+            pair("PlcToNc", "PLCTONC_AXIS_REF (Tc2_MC2)"),
         ],
+        Some("PLCTONC") => vec![pair("Override", "UDINT")],
         Some("STATUS") => STATUS_NAMES
             .iter()
             .map(|n| pair(n, "BOOL"))
@@ -159,6 +166,10 @@ pub enum Step {
     Field(Ident),
     /// `[i]`
     Index(ArrayDim),
+    /// `^`: the axis behind a `REFERENCE TO AXIS_REF` (dereferenced where it is used, the ST
+    /// lowering writes the `^`), a `POINTER TO AXIS_REF` or a `REF_TO AXIS_REF`; always the
+    /// path's last step.
+    Deref,
 }
 
 /// Where an `AXIS_REF` sits: a variable (`Axis`), an element of an array (`axisRefs[i]`), a field
@@ -190,9 +201,13 @@ impl AxisPath {
             .iter()
             .filter_map(|s| match s {
                 Step::Index(d) => Some(d.clone()),
-                Step::Field(_) => None,
+                Step::Field(_) | Step::Deref => None,
             })
             .collect()
+    }
+    /// The axis sits behind a reference or pointer (which may be unbound).
+    fn through_reference(&self) -> bool {
+        matches!(self.steps.last(), Some(Step::Deref))
     }
     /// `v`'s indexes and the accessors after the axis, when `v` goes through this path (one
     /// operand per index: the arrays read are one-dimensional; another count is the semantic
@@ -206,6 +221,7 @@ impl AxisPath {
             match (s, a) {
                 (Step::Field(f), Accessor::Field(g)) if f.key() == g.key() => {}
                 (Step::Index(_), Accessor::Index(ix)) if ix.len() == 1 => index.push(ix[0].clone()),
+                (Step::Deref, Accessor::Deref(_)) => {}
                 _ => return None,
             }
         }
@@ -220,6 +236,7 @@ impl AxisPath {
             .map(|s| match s {
                 Step::Field(f) => Accessor::Field(Ident::new(f.name.clone(), at)),
                 Step::Index(_) => Accessor::Index(ix.next().cloned().into_iter().collect()),
+                Step::Deref => Accessor::Deref(at),
             })
             .collect();
         accessors.extend(field.map(|f| Accessor::Field(Ident::new(f, at))));
@@ -282,6 +299,14 @@ pub fn axis_paths<'a>(vars: impl Iterator<Item = &'a VarDecl>, structs: &Structs
         }
         match ty {
             TypeRef::Named(t) if t.is("AXIS_REF") => out.push(steps.clone()),
+            // `Axis : REFERENCE TO AXIS_REF` (TC_XboxController's `FB_Xbox_*_NC`), `POINTER TO
+            // AXIS_REF`, `REF_TO AXIS_REF`: the axis it refers to, read where it is bound
+            TypeRef::Ref { target, .. } if matches!(&**target, TypeRef::Named(t) if t.is("AXIS_REF")) =>
+            {
+                steps.push(Step::Deref);
+                out.push(steps.clone());
+                steps.pop();
+            }
             TypeRef::Named(t) => {
                 let Some(fields) = structs.get(&t.key()) else {
                     return;
@@ -350,6 +375,10 @@ struct Used {
     homed: bool,
     /// Where a torque (`NcToPlc.ActTorque`, `SetTorque`) is first read.
     torque: Option<Span>,
+    /// The axes (path keys) whose `PlcToNc.Override` is read or written.
+    overrides: Vec<String>,
+    /// The labels made so far (`__TC2_<AXIS>_UNBOUND<n>`, see [`guarded`]).
+    labels: usize,
 }
 
 impl Used {
@@ -357,6 +386,161 @@ impl Used {
         if !self.paths.iter().any(|u| u.key() == a.key()) {
             self.paths.push(a.clone());
         }
+    }
+    /// `stmts`, run only while the reference or pointer the axis sits behind is bound: `LD Axis
+    /// NE NULL JMPCN skip ... skip:` (Infosys, "REFERENCE": "TwinCAT initializes references
+    /// (with 0)", and `__ISVALIDREF` tells whether one refers to a variable). An unbound
+    /// reference's members then read what they last read (0 / FALSE until it is first bound),
+    /// and no NULL is dereferenced. Of an axis not behind a reference: `stmts` as they are.
+    fn guarded(&mut self, axis: &AxisPath, index: &[Operand], stmts: Vec<IlStmt>) -> Vec<IlStmt> {
+        if !axis.through_reference() || stmts.is_empty() {
+            return stmts;
+        }
+        let at = axis.root.span;
+        self.labels += 1;
+        let label = Ident::new(
+            format!("{}_UNBOUND{}", hidden_name(axis, ""), self.labels),
+            at,
+        );
+        let mut reference = axis.reference(index, None, at);
+        let mut accessors = reference.accessors.to_vec();
+        accessors.pop(); // the `^` (the path's last step)
+        reference.accessors = accessors.into();
+        let null = Operand::Ref(Box::new(il_frontend::ast::RefOperand {
+            of: None,
+            span: at,
+            call_scoped: false,
+            address_of: false,
+        }));
+        let mut out = vec![
+            var_instr(Op::Ld, reference, at),
+            instr(
+                InstrKind::Simple {
+                    op: Op::Ne,
+                    negate: false,
+                    operand: Some(null),
+                },
+                at,
+            ),
+            instr(
+                InstrKind::Jump {
+                    cond: Condition::IfFalse,
+                    label: label.clone(),
+                },
+                at,
+            ),
+        ];
+        out.extend(stmts);
+        out.push(IlStmt::Label(label));
+        out
+    }
+}
+
+/// Beckhoff's scale of `PlcToNc.Override` (UDINT): 1000000 is 100 % (the factor 1.0).
+const OVERRIDE_FULL: f64 = 1_000_000.0;
+
+/// The override written into the axis (`Axis.PlcToNc.Override := x`, `x` the current result,
+/// of the element `index`): `ST __TC2_<AXIS>_OVR`, then, while the axis is bound, the per-axis
+/// table `__TC2_OVERRIDE[AxisNo]` (what every POU reads back) and the hidden MC_SetOverride with
+/// `VelFactor := OVR / 1000000` (the NC's velocity override, applied to the running and later
+/// moves, as Tc2_MC2's MC_Power.Override is: [`crate::tc2_override`]).
+fn override_written(axis: &AxisPath, index: &[Operand], at: Span, used: &mut Used) -> Vec<IlStmt> {
+    let ovr = || hidden(axis, "OVR", index, None, at);
+    let velf = || hidden(axis, "VELF", index, None, at);
+    let table = override_table(axis, index, at);
+    let body = vec![
+        var_instr(Op::Ld, ovr(), at),
+        var_instr(Op::St, table, at),
+        instr(
+            InstrKind::FunctionCall {
+                name: Ident::new("UDINT_TO_LREAL", at),
+                args: Box::new(CallArgs::None),
+            },
+            at,
+        ),
+        instr(
+            InstrKind::Simple {
+                op: Op::Div,
+                negate: false,
+                operand: Some(Operand::literal(Literal {
+                    kind: LiteralKind::Real(OVERRIDE_FULL),
+                    type_prefix: None,
+                    span: at,
+                })),
+            },
+            at,
+        ),
+        var_instr(Op::St, velf(), at),
+        instr(
+            InstrKind::Call {
+                cond: Condition::Always,
+                instance: Box::new(hidden(axis, "SETOVR", index, None, at)),
+                args: CallArgs::Formal(vec![
+                    input_arg("Axis", Operand::Var(axis.reference(index, None, at)), at),
+                    input_arg(
+                        "Enable",
+                        Operand::literal(Literal {
+                            kind: LiteralKind::Bool(true),
+                            type_prefix: None,
+                            span: at,
+                        }),
+                        at,
+                    ),
+                    input_arg("VelFactor", Operand::Var(velf()), at),
+                ]),
+            },
+            at,
+        ),
+    ];
+    let mut out = vec![var_instr(Op::St, ovr(), at)];
+    out.extend(used.guarded(axis, index, body));
+    out
+}
+
+/// `__TC2_OVERRIDE[<axis>.AxisNo]`: the override last written into the axis, by any POU (the
+/// axes' table, 100 % at the start as the NC's override is), read where it is written.
+fn override_table(axis: &AxisPath, index: &[Operand], at: Span) -> VarRef {
+    let axis_no = axis.reference(index, Some("AxisNo"), at);
+    VarRef {
+        base: Ident::new("__TC2_OVERRIDE", at),
+        accessors: vec![Accessor::Index(vec![Operand::Var(axis_no)])].into(),
+        span: at,
+    }
+}
+
+/// The prologue of `PlcToNc.Override` of an axis behind a reference (of the element `index`):
+/// `__TC2_<AXIS>_NO` is the axis's `AxisNo` while the reference is bound, else
+/// `__TC2_NO_AXIS`, the table's last entry, which nothing writes (an unbound reference's
+/// override reads 0).
+fn override_read(axis: &AxisPath, index: &[Operand], used: &mut Used) -> Vec<IlStmt> {
+    let at = axis.root.span;
+    let no = || hidden(axis, "NO", index, None, at);
+    let none = VarRef {
+        base: Ident::new("__TC2_NO_AXIS", at),
+        accessors: Vec::new().into(),
+        span: at,
+    };
+    let mut out = vec![var_instr(Op::Ld, none, at), var_instr(Op::St, no(), at)];
+    let bound = vec![
+        var_instr(Op::Ld, axis.reference(index, Some("AxisNo"), at), at),
+        var_instr(Op::St, no(), at),
+    ];
+    out.extend(used.guarded(axis, index, bound));
+    out
+}
+
+/// The axis `v` writes or reads the override of (`Axis.PlcToNc.Override`), and its indexes.
+fn override_of<'a>(v: &VarRef, axes: &'a Axes) -> Option<(&'a AxisPath, Vec<Operand>)> {
+    let mut q = v.clone();
+    axes.unqualify(&mut q);
+    let (axis, index, rest) = axes.find(&q)?;
+    match rest.as_slice() {
+        [Accessor::Field(g), Accessor::Field(f)]
+            if g.key() == "PLCTONC" && f.key() == "OVERRIDE" =>
+        {
+            Some((axis, index))
+        }
+        _ => None,
     }
 }
 
@@ -424,7 +608,8 @@ pub fn read_members(p: &mut Pou, globals: &Axes, structs: &Structs, diags: &mut 
     }
     let mut hidden = Vec::new();
     let mut prologue = Vec::new();
-    for axis in &used.paths {
+    let paths = used.paths.clone();
+    for axis in &paths {
         let at = axis.root.span;
         let dims = axis.dims();
         let ty = |name: &str| {
@@ -457,7 +642,9 @@ pub fn read_members(p: &mut Pou, globals: &Axes, structs: &Structs, diags: &mut 
             ("VELO", "MC_ReadActualVelocity"),
         ] {
             decl(suffix, ty(block));
-            prologue.extend(elements.iter().map(|ix| call(axis, suffix, ix)));
+            for ix in &elements {
+                prologue.extend(used.guarded(axis, ix, vec![call(axis, suffix, ix)]));
+            }
         }
         for flag in ["MOVING", "NOTMOVING"] {
             decl(flag, ty("BOOL"));
@@ -470,14 +657,28 @@ pub fn read_members(p: &mut Pou, globals: &Axes, structs: &Structs, diags: &mut 
                 decl(name, ty(ty_name));
             }
             for ix in &elements {
-                prologue.extend(computed(axis, ix));
+                let c = computed(axis, ix);
+                prologue.extend(used.guarded(axis, ix, c));
             }
         }
         if used.error_codes.contains(&axis.key()) {
             decl("AXERR", ty("MC_ReadAxisError"));
             decl("ERRORCODE", ty("UDINT"));
             for ix in &elements {
-                prologue.extend(error_code(axis, ix));
+                let e = error_code(axis, ix);
+                prologue.extend(used.guarded(axis, ix, e));
+            }
+        }
+        if used.overrides.contains(&axis.key()) {
+            decl("OVR", ty("UDINT"));
+            decl("VELF", ty("LREAL"));
+            decl("SETOVR", ty("MC_SetOverride"));
+            if axis.through_reference() {
+                decl("NO", ty("UDINT"));
+                for ix in &elements {
+                    let o = override_read(axis, ix, &mut used);
+                    prologue.extend(o);
+                }
             }
         }
     }
@@ -628,15 +829,35 @@ fn moving(axis: &AxisPath, index: &[Operand]) -> Vec<IlStmt> {
     out
 }
 
-fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagnostics) {
+fn rewrite(body: &mut Vec<IlStmt>, axes: &Axes, used: &mut Used, diags: &mut Diagnostics) {
     // the stores into a member without a counterpart (`Axis.PlcToNc.Override := x;`, E1042
     // reported): left out, as a store leaves the current result as it is
     let mut dropped = Vec::new();
     let mut at = Vec::new();
+    // statements that stand for one (`ST Axis.PlcToNc.Override`, `Axis.ReadStatus()` through a
+    // reference), by index
+    let mut replaced: Vec<(usize, Vec<IlStmt>)> = Vec::new();
     for (k, s) in body.iter_mut().enumerate() {
         let IlStmt::Instr(i) = s else { continue };
         let mut replace = None;
         match &mut i.kind {
+            // `Axis.PlcToNc.Override := x;` (TC_XboxController's jog blocks, through a
+            // `REFERENCE TO AXIS_REF`): the NC's velocity override
+            InstrKind::Simple {
+                op: Op::St,
+                negate: false,
+                operand: Some(Operand::Var(v)),
+            } if override_of(v, axes).is_some() => {
+                if let Some((a, ix)) = override_of(v, axes) {
+                    used.note(a);
+                    if !used.overrides.contains(&a.key()) {
+                        used.overrides.push(a.key());
+                    }
+                    used.homed = true;
+                    let code = override_written(a, &ix, i.span, used);
+                    replaced.push((k, code));
+                }
+            }
             InstrKind::Simple {
                 op,
                 operand: Some(o),
@@ -665,7 +886,7 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagno
                     Some((a, ix, rest)) if matches!(rest.as_slice(), [Accessor::Field(m)] if m.key() == "READSTATUS") =>
                     {
                         used.note(a);
-                        replace = Some(call(a, "STATUS", &ix));
+                        replace = Some(used.guarded(a, &ix, vec![call(a, "STATUS", &ix)]));
                     }
                     // `Axis();`: AXIS_REF is a FUNCTION_BLOCK of Tc2_MC2 (its ReadStatus an
                     // action of it), and a call of the instance refreshes its status as
@@ -679,7 +900,7 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagno
                             } =>
                     {
                         used.note(a);
-                        replace = Some(call(a, "STATUS", &ix));
+                        replace = Some(used.guarded(a, &ix, vec![call(a, "STATUS", &ix)]));
                     }
                     _ => {
                         let _ = member(instance, axes, used, diags);
@@ -702,11 +923,15 @@ fn rewrite(body: &mut [IlStmt], axes: &Axes, used: &mut Used, diags: &mut Diagno
             _ => {}
         }
         if let Some(r) = replace {
-            *s = r;
+            replaced.push((k, r));
         }
     }
     for (k, span) in dropped.into_iter().zip(at) {
         body[k] = no_store(span);
+    }
+    // (from the last, so that the earlier indexes stay)
+    for (k, code) in replaced.into_iter().rev() {
+        body.splice(k..k + 1, code);
     }
 }
 
@@ -773,6 +998,26 @@ fn member(
     axes.unqualify(&mut q);
     // the axis (`Axis`, `axisRefs[i]`, `GVL.axes[i].Axis`), its indexes, the members after it
     let (axis, index, rest) = axes.find(&q)?;
+    // `PlcToNc.Override` read: the override last written into the axis (see [`override_read`])
+    if override_of(&q, axes).is_some() {
+        used.note(axis);
+        if !used.overrides.contains(&axis.key()) {
+            used.overrides.push(axis.key());
+        }
+        used.homed = true;
+        let at = v.span;
+        *v = if axis.through_reference() {
+            let no = hidden(axis, "NO", &index, None, at);
+            VarRef {
+                base: Ident::new("__TC2_OVERRIDE", at),
+                accessors: vec![Accessor::Index(vec![Operand::Var(no)])].into(),
+                span: at,
+            }
+        } else {
+            override_table(axis, &index, at)
+        };
+        return None;
+    }
     // Tc2_MC2's AXIS_REF is `PlcToNc` (PLCTONC_AXIS_REF), `NcToPlc` (NCTOPLC_AXIS_REF), `ADS`
     // (ST_AdsAddress) and `Status` (ST_AxisStatus) (Infosys, Tc2_MC2 > Data types > AXIS_REF):
     // the simulated axis has no value for `PlcToNc` (the PLC's requests to the NC: override,
@@ -1095,7 +1340,7 @@ fn e1042(member: &str, span: Span) -> Diagnostic {
     )
     .at(span)
     .with_hint(
-        "ladderc reads Status.Error, ErrorID, ErrorStop, Disabled, Stopping, StandStill, DiscreteMotion, \
+        "ladderc reads PlcToNc.Override, Status.Error, ErrorID, ErrorStop, Disabled, Stopping, StandStill, DiscreteMotion, \
          ContinuousMotion, SynchronizedMotion, Homing, HomingBusy, CoupledMode, InTargetPosition, \
          InPositionArea, Moving, NotMoving, HasJob, Homed, Operational, ControlLoopClosed, \
          PositiveDirection, NegativeDirection and NcToPlc.ActPos, SetPos, ActVelo, SetVelo, PosDiff, \
