@@ -1,5 +1,5 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
-//! [`crate::lower`]; SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST is parsed
+//! [`crate::lower`], and so is a CODESYS CFC chart (read by [`crate::codesys_cfc`]); SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST is parsed
 //! and lowered to IL by [`crate::st_body`]. Every POU is lowered and checked, whether a program
 //! instance reaches it or not, as in ST text (before round 29 of issue #13 an ST POU that no program
 //! instance reached was skipped unchecked with W3004, no longer raised).
@@ -32,11 +32,12 @@ pub fn lower_pou_body(
     let Some(body) = pou_el.child("body") else {
         return (Vec::new(), Vec::new());
     };
-    let Some(lang) = body
-        .children
-        .iter()
-        .find(|c| !matches!(c.name(), "documentation" | "addData"))
-    else {
+    // a CODESYS CFC chart (vendor data beside an empty `<ST>`) is the body (`codesys_cfc`)
+    let Some(lang) = crate::codesys_cfc::body_chart(body).or_else(|| {
+        body.children
+            .iter()
+            .find(|c| !matches!(c.name(), "documentation" | "addData"))
+    }) else {
         return (Vec::new(), Vec::new());
     };
     let span = ctx.tag(lang);
@@ -64,8 +65,12 @@ pub fn lower_pou_body(
         il_frontend::actions::inline_calls(stmts, &acts.il, &is_var, "__A", &mut next, ctx.diags)
     };
     match lang.name() {
-        "LD" | "FBD" => {
-            let g = graph::read(ctx, lang, name);
+        "LD" | "FBD" | "CFC" => {
+            let g = if lang.name() == "CFC" {
+                crate::codesys_cfc::read(ctx, lang, name)
+            } else {
+                graph::read(ctx, lang, name)
+            };
             let mut low = BodyLowering::new(index, pou, span).calling_actions();
             // a box named after an action is `CAL Act` (lower_block.rs): the action runs there
             let stmts = low.lower(ctx, &g);
@@ -193,9 +198,11 @@ fn lower_actions<'e, 'a>(
         };
         let id = Ident::new(n, ctx.attr_span(a, "name"));
         let Some(b) = a.child("body").and_then(|b| {
-            b.children
-                .iter()
-                .find(|c| !matches!(c.name(), "documentation" | "addData"))
+            crate::codesys_cfc::body_chart(b).or_else(|| {
+                b.children
+                    .iter()
+                    .find(|c| !matches!(c.name(), "documentation" | "addData"))
+            })
         }) else {
             if body_lang != "SFC" {
                 raw.push((id, Vec::new()));
@@ -211,8 +218,12 @@ fn lower_actions<'e, 'a>(
             }
             "ST" => st_other.push((id, b)),
             "IL" => raw.push((id, crate::il_body::parse(ctx, b, pou))),
-            "LD" | "FBD" => {
-                let g = graph::read(ctx, b, name);
+            "LD" | "FBD" | "CFC" => {
+                let g = if b.name() == "CFC" {
+                    crate::codesys_cfc::read(ctx, b, name)
+                } else {
+                    graph::read(ctx, b, name)
+                };
                 let mut low = BodyLowering::new(index, pou, ctx.tag(b)).calling_actions();
                 let mut stmts = low.lower(ctx, &g);
                 let mut renames = Renames::default();

@@ -5,7 +5,7 @@
 //! [`crate::body`]), one `Configuration` per `<configuration>`; diagnostics for what cannot be read.
 //! Invariants: POUs keep their interface even when the body cannot be lowered (E3003/E3004), so callers
 //! are still checked; vendor data (`addData`, vendor elements) is skipped with one W3002 per file,
-//! except a CODESYS CFC body (E0321, `codesys_cfc`).
+//! except a CODESYS CFC chart (read as a POU's or action's body, else E0321: `codesys_cfc`).
 
 use crate::body;
 use crate::catalogue;
@@ -627,7 +627,8 @@ fn is_read_vendor_data(name: &str) -> bool {
 /// blocks it reads are searched for further vendor data inside them; an empty `<addData/>`, as
 /// CODESYS writes one after each method's interface, holds nothing to ignore).
 fn vendor_data(ctx: &mut Ctx, root: &Element) {
-    // a CODESYS CFC body is E0321 of its own (`codesys_cfc`), not ignored vendor data
+    // a CODESYS CFC chart is a body (`codesys_cfc`: read, or E0321 of its own), not ignored vendor
+    // data
     let charts = crate::codesys_cfc::unread_charts(ctx, root);
     let mut found: Vec<&Element> = Vec::new();
     let mut ignored_name: Vec<(usize, &str)> = Vec::new();

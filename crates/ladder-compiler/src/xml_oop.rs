@@ -219,6 +219,8 @@ pub(crate) fn pending_body(
     let st = |holder: &Element| -> Option<(String, usize)> {
         let lang = match holder.child("body") {
             None => return Some((String::new(), holder.tag_end())),
+            // a CODESYS CFC chart beside its empty `<ST>` is read as FBD (`codesys_cfc`)
+            Some(b) if crate::codesys_cfc::body_chart(b).is_some() => return None,
             Some(b) => b
                 .children
                 .iter()
