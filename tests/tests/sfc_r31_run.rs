@@ -179,14 +179,15 @@ fn a_one_step_chart_s_step_action_reads_its_step_flag() {
         "MAIN.bLamp",
     );
     assert!(!stderr.contains("error["), "{stderr}");
-    assert_eq!(column(&trace, "MAIN.bLamp"), [0.0, 1.0, 1.0, 0.0, 0.0, 0.0]);
+    assert_eq!(column(&trace, "MAIN.bLamp"), [0.0, 0.0, 1.0, 1.0, 0.0, 0.0]);
 }
 
 /// The steps' flags in the actions of a two-step TwinCAT chart: `Idle` -> `bGo` -> `Fill` ->
 /// `bDone` -> jump `Idle`. `Fill`'s step action copies `Fill.t` and `Fill.x`, and `Idle.x`
-/// (inactive there); `Idle`'s copies `Idle.x`. Scan by scan (10 ms): `Fill` is entered in scan 2,
-/// its time counts 0, 10, 20 ms while it stays, and `bDone` in scan 5 leaves it (its action does
-/// not run in that scan, the copies keep their values). Before round 31: E1001 "undeclared name
+/// (inactive there); `Idle`'s copies `Idle.x`. Scan by scan (10 ms; a stimulus row of cycle `n`
+/// shows from the trace's row `n + 1`): `bGo` enters `Fill`, whose time counts 0, 10, 20 ms while
+/// it stays, and `bDone` leaves it (its action does not run in that scan, the copies keep their
+/// values). Before round 31: E1001 "undeclared name
 /// `Fill`".
 #[test]
 fn step_x_and_step_t_in_a_twincat_chart_s_actions_are_the_step_s_flag_and_time() {
@@ -222,10 +223,10 @@ fn step_x_and_step_t_in_a_twincat_chart_s_actions_are_the_step_s_flag_and_time()
         rows(&trace),
         [
             "T#0ms,0,0,1,0",
+            "T#0ms,0,0,1,0",
             "T#0ms,1,0,1,1",
             "T#10ms,1,0,1,1",
             "T#20ms,1,0,1,1",
-            "T#20ms,1,0,1,0",
             "T#20ms,1,0,1,0",
             "T#20ms,1,0,1,0",
         ]
@@ -252,7 +253,7 @@ fn step_flags_in_an_actions_block_after_a_textual_chart() {
     assert!(!stderr.contains("error["), "{stderr}");
     assert_eq!(
         rows(&trace),
-        ["T#0ms,0", "T#0ms,1", "T#10ms,1", "T#20ms,1", "T#30ms,1"]
+        ["T#0ms,0", "T#0ms,0", "T#0ms,1", "T#10ms,1", "T#20ms,1"]
     );
 }
 
@@ -306,7 +307,7 @@ fn an_initial_value_read_from_another_variable_in_a_chart_s_block_is_computed_at
         assert!(!stderr.contains("error["), "{name}: {stderr}");
         assert_eq!(
             column(&trace, "MAIN.nLeft"),
-            [3.0, 2.0, 1.0, 0.0, 0.0, 0.0],
+            [3.0, 3.0, 2.0, 1.0, 0.0, 0.0],
             "{name}"
         );
     }
