@@ -81,7 +81,15 @@ pub fn lower(
         })
         .collect();
     let (body, temps, standalone) = il_frontend::st::compile_body_with_actions(
-        ctx.file, &t.text, t.base, decls, pou, &actions, il_actions, span, &mut local,
+        ctx.file,
+        &t.text,
+        t.base,
+        decls,
+        pou,
+        (&actions, &[]),
+        il_actions,
+        span,
+        &mut local,
     );
     let xml = XmlContext {
         pou: Some(pou.name.name.clone()),

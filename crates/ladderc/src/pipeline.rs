@@ -1836,7 +1836,7 @@ fn lower_textual_sfc(
         // copied per chart (a copy padded to the body's offset cost charts x file size)
         let src = map.get(pb.file).text.as_str();
         let body = pb.base..pb.base + pb.text.len();
-        let (body, hidden) = if src.get(body.clone()) == Some(pb.text.as_str()) {
+        let (body, hidden, steps) = if src.get(body.clone()) == Some(pb.text.as_str()) {
             ladder_compiler::sfc::text::lower(pb.file, src, body, p, &index, diags)
         } else {
             // a body that is not its file's text (parse_text never gives one): padded to its offset
@@ -1844,7 +1844,11 @@ fn lower_textual_sfc(
             padded.push_str(&pb.text);
             ladder_compiler::sfc::text::lower(pb.file, &padded, body, p, &index, diags)
         };
-        p.body = body;
+        // what the POU's body holds before its chart (the run-time initial values of its
+        // variables, `il_frontend::st::file::compile_pending`) runs first, as in an ST body
+        let mut first = std::mem::take(&mut p.body);
+        first.extend(body);
+        p.body = first;
         if !hidden.is_empty() {
             let span = diagnostics::Span::new(pb.file, pb.base, pb.base);
             p.var_blocks.push(VarBlock::locals(hidden, span));
@@ -1860,6 +1864,8 @@ fn lower_textual_sfc(
                 &mut next,
                 diags,
             );
+            // `Step.X`, `Step.T` in those actions: the chart's flags (round 31: E1001 before)
+            ladder_compiler::sfc::rename_step_flags(&mut p.body, &steps);
             // the actions' own diagnostics, as where an ST body calls them
             for d in found {
                 diags.push(d.clone());

@@ -2180,11 +2180,14 @@ fn parse_text_as_read(
             continue;
         }
         if let Some(r) = &p.actions {
-            // the actions of the ST POU just before the block: inlined where its body calls them
-            let owner = pi
-                .checked_sub(1)
-                .and_then(|k| pous.get(k))
-                .filter(|q| q.actions.is_none() && q.lang == Lang::St && q.oop.is_none());
+            // the actions of the ST POU just before the block: inlined where its body calls them;
+            // or of the chart just before it, whatever its statements look like (a chart of one
+            // step, `INITIAL_STEP S0 : A(N); END_STEP TRANSITION FROM S0 TO S0 := go;`, has a
+            // label-like `S0 :` and one `:=`, which `body_lang` counts as IL: before round 31 its
+            // actions were refused, E0304, and the chart named unknown actions, E3122)
+            let owner = pi.checked_sub(1).and_then(|k| pous.get(k)).filter(|q| {
+                q.actions.is_none() && (q.lang == Lang::St || q.sfc.is_some()) && q.oop.is_none()
+            });
             // ... or of the IL POU just before it (CODESYS V2.3 exports an IL program with its
             // actions so): its body stays the IL read below, the actions are lowered with it
             let il_owner = pi.checked_sub(1).and_then(|k| pous.get(k)).filter(|q| {
@@ -2296,6 +2299,17 @@ fn parse_text_as_read(
                 (&mut method_diags, diags),
             );
             diags.extend(method_diags);
+            // initial values read from other variables, as in an ST block (W1433; before round
+            // 31 E1025 in a chart's block): assigned before the chart's first scan
+            // (`compile_pending`, then the chart, ladderc's `lower_textual_sfc`)
+            let var_inits = super::pou_inits::pou_var_inits(
+                (file, src, p.name_range.end..p.body.start),
+                &mut text,
+                false,
+                &file_globals,
+                &mut computed,
+                diags,
+            );
             pending.push(PendingBody {
                 file,
                 name_start: p.name_range.start,
@@ -2309,7 +2323,7 @@ fn parse_text_as_read(
                 fb_init_args: Vec::new(),
                 after_init: Vec::new(),
                 lone: None,
-                var_inits: Vec::new(),
+                var_inits,
             });
             blank(&mut text, p.body.clone());
             continue;
@@ -2500,50 +2514,14 @@ fn parse_text_as_read(
                 }
                 // the run-time initial values of its own variables: assignments, left out of the
                 // declarations
-                let from = p.name_range.end;
-                let found = (from < p.body.start)
-                    .then(|| {
-                        super::pou_inits::pou_run_time_inits(
-                            &text,
-                            from..p.body.start,
-                            function,
-                            &file_globals,
-                        )
-                    })
-                    .flatten();
-                let var_inits: Vec<VarInits> = found
-                    .map(|found| {
-                        let super::pou_inits::Found {
-                            cut,
-                            inits,
-                            prefixed,
-                            unplaceable,
-                        } = found;
-                        for (name, at) in &unplaceable {
-                            diags.push(super::pou_inits::unplaceable_error(
-                                src.get(name.clone()).unwrap_or(""),
-                                Span::new(file, at.start, at.end),
-                            ));
-                        }
-                        // W1433 once per POU, at the first (of a value computed: not one left
-                        // out with its E1069)
-                        let placed = |(name, _): &&(Range<usize>, Range<usize>)| {
-                            !unplaceable.iter().any(|(n, _)| n == name)
-                        };
-                        if let Some((name, value)) = cut.iter().find(placed) {
-                            diags.push(super::pou_inits::computed_warning(
-                                src.get(name.clone()).unwrap_or(""),
-                                Span::new(file, value.start, value.end),
-                            ));
-                        }
-                        for (_, r) in cut {
-                            computed.push(r.clone());
-                            blank(&mut text, r);
-                        }
-                        (file, inits, from, prefixed)
-                    })
-                    .into_iter()
-                    .collect();
+                let var_inits = super::pou_inits::pou_var_inits(
+                    (file, src, p.name_range.end..p.body.start),
+                    &mut text,
+                    function,
+                    &file_globals,
+                    &mut computed,
+                    diags,
+                );
                 pending.push(PendingBody {
                     file,
                     name_start: p.name_range.start,
@@ -2924,12 +2902,16 @@ pub fn compile_pending(
         decls.interfaces.insert(i.name.key(), i);
     }
     decls.bases = bases;
+    // the type of a chart's steps, which its actions read (`Step.X`, `Step.T`)
+    if let Some(pb) = pending.iter().find(|pb| pb.sfc && !pb.actions.is_empty()) {
+        let at = Span::new(pb.file, pb.base, pb.base);
+        decls.add_type(super::sfc::step_type(at));
+    }
     decls.derived = derived;
     // (a chart's body is lowered by the caller, its actions and methods here)
-    for pb in pending
-        .iter()
-        .filter(|pb| !pb.sfc || !pb.actions.is_empty() || !pb.methods.is_empty())
-    {
+    for pb in pending.iter().filter(|pb| {
+        !pb.sfc || !pb.actions.is_empty() || !pb.methods.is_empty() || !pb.var_inits.is_empty()
+    }) {
         let diags: &mut Diagnostics = if pb.derived() {
             &mut inherited
         } else {
@@ -2974,13 +2956,19 @@ pub fn compile_pending(
                     standalone.extend(actions);
                     continue;
                 }
+                // a chart's actions read its steps' flags (`Fill.T`, `S0.x`)
+                let chart_steps = if pb.sfc && !pb.actions.is_empty() {
+                    super::sfc::step_names(pb.file, &pb.text)
+                } else {
+                    Vec::new()
+                };
                 let (body, temps, actions) = super::compile_body_with_actions(
                     pb.file,
                     if pb.sfc { "" } else { &pb.text },
                     pb.base,
                     &decls,
                     p,
-                    &pb.actions,
+                    (&pb.actions, &chart_steps),
                     &[],
                     span,
                     diags,
@@ -3462,7 +3450,7 @@ fn il_body_actions(
         pb.base,
         decls,
         p,
-        &st_actions,
+        (&st_actions, &[]),
         &il_actions,
         span,
         diags,

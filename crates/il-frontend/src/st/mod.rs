@@ -117,7 +117,7 @@ pub fn compile_body(
     diags: &mut Diagnostics,
 ) -> (Vec<IlStmt>, Option<VarBlock>) {
     let (body, blocks, _) =
-        compile_body_with_actions(file, src, base, decls, pou, &[], &[], span, diags);
+        compile_body_with_actions(file, src, base, decls, pou, (&[], &[]), &[], span, diags);
     (body, blocks.into_iter().find(|b| b.kind == VarKind::Temp))
 }
 
@@ -127,6 +127,9 @@ pub fn compile_body(
 /// diagnostics of that lowering kept in it), for calls from other POUs (`inst.Act();`): see
 /// [`crate::actions::link`]. `il_actions` are the POU's actions already lowered to IL (PLCopen XML
 /// actions in IL, LD or FBD): a call statement `Act();` of one is a copy of its statements.
+/// `chart_steps`: when the POU's body is a chart, its steps, which its actions read as
+/// `Step.X`/`Step.T` (of [`sfc::STEP_TYPE`], which `decls` then declares; the caller renames them
+/// to the chart's flags).
 #[allow(clippy::too_many_arguments)]
 pub fn compile_body_with_actions(
     file: FileId,
@@ -134,7 +137,7 @@ pub fn compile_body_with_actions(
     base: usize,
     decls: &Declarations,
     pou: &Pou,
-    actions: &[(crate::ast::Ident, String, usize)],
+    (actions, chart_steps): (&[(crate::ast::Ident, String, usize)], &[String]),
     il_actions: &[(crate::ast::Ident, Vec<IlStmt>)],
     span: Span,
     diags: &mut Diagnostics,
@@ -142,6 +145,12 @@ pub fn compile_body_with_actions(
     let mut local = Diagnostics::new();
     let mut stmts = parse_statements_of(file, src, base, pou, &mut local);
     let mut low = PouLowering::new(decls, pou);
+    for step in chart_steps {
+        low.declare(
+            step,
+            crate::ast::TypeRef::Named(crate::ast::Ident::new(sfc::STEP_TYPE, pou.span)),
+        );
+    }
     let mut parsed: Vec<(crate::ast::Ident, Vec<ast::Stmt>)> = Vec::new();
     if !actions.is_empty() {
         parsed = actions

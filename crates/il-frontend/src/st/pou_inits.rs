@@ -363,3 +363,50 @@ pub(super) fn computed_global_warning(name: &str, at: crate::Span) -> diagnostic
     .with_primary_label("calls a function or reads a variable")
     .with_hint("compiled as CODESYS and TwinCAT do: assigned once before the first cycle, in the order of the text; a global read before its own assignment holds its type's default; for another IEC compiler assign it in a program")
 }
+
+/// The run-time initial values of the POU declared in `src[declarations]` (file `file`), for its
+/// `PendingBody::var_inits`, whatever the language of its body (ST, or a chart: round 31, an SFC
+/// block's `n : UINT := nTotal;` was E1025): each `:= expr` taken is blanked in `text` and pushed
+/// onto `computed`; W1433 at the first, E1069 for one that cannot be placed.
+pub(super) fn pou_var_inits(
+    (file, src, declarations): (crate::FileId, &str, Range<usize>),
+    text: &mut String,
+    function: bool,
+    file_globals: &HashSet<String>,
+    computed: &mut Vec<Range<usize>>,
+    diags: &mut diagnostics::Diagnostics,
+) -> Vec<super::file::VarInits> {
+    let from = declarations.start;
+    if from >= declarations.end {
+        return Vec::new();
+    }
+    let Some(Found {
+        cut,
+        inits,
+        prefixed,
+        unplaceable,
+    }) = pou_run_time_inits(text, declarations, function, file_globals)
+    else {
+        return Vec::new();
+    };
+    for (name, at) in &unplaceable {
+        diags.push(unplaceable_error(
+            src.get(name.clone()).unwrap_or(""),
+            crate::Span::new(file, at.start, at.end),
+        ));
+    }
+    // W1433 once per POU, at the first (of a value computed: not one left out with its E1069)
+    let placed =
+        |(name, _): &&(Range<usize>, Range<usize>)| !unplaceable.iter().any(|(n, _)| n == name);
+    if let Some((name, value)) = cut.iter().find(placed) {
+        diags.push(computed_warning(
+            src.get(name.clone()).unwrap_or(""),
+            crate::Span::new(file, value.start, value.end),
+        ));
+    }
+    for (_, r) in cut {
+        computed.push(r.clone());
+        super::file::blank(text, r);
+    }
+    vec![(file, inits, from, prefixed)]
+}

@@ -380,6 +380,45 @@ impl Reader<'_> {
     }
 }
 
+/// The type a step is of for the ST lowering of the chart's conditions and actions: a structure of
+/// `X : BOOL` (active) and `T : TIME` (elapsed since it became active), so `Step.X` and `Step.T`
+/// type-check (IEC 61131-3 ed. 3 8.3.2, ed. 2 2.6.2; CODESYS's and TwinCAT's `SFCStepType`,
+/// Beckhoff Infosys "Implicit variables": `<stepname>.x`, `<stepname>.t`); the SFC lowering then
+/// renames them to the chart's hidden variables.
+pub const STEP_TYPE: &str = "__SFC_STEP";
+
+/// The declaration of [`STEP_TYPE`], at `span`.
+pub fn step_type(span: Span) -> crate::ast::TypeDecl {
+    use crate::ast::{Ident, TypeDecl, TypeDef, TypeRef, VarDecl};
+    let field = |n: &str, t: &str| {
+        VarDecl::new(
+            Ident::new(n, span),
+            TypeRef::Named(Ident::new(t, span)),
+            span,
+        )
+    };
+    TypeDecl {
+        name: Ident::new(STEP_TYPE, span),
+        def: TypeDef::Struct {
+            fields: vec![field("X", "BOOL"), field("T", "TIME")],
+        },
+        union: false,
+        span,
+    }
+}
+
+/// The names of the steps of the chart `body` (a POU's body text in textual SFC), in text order:
+/// the steps whose flags the POU's own actions may read. A chart that cannot be read gives the
+/// steps read (its diagnostics are reported where the chart is lowered).
+pub fn step_names(file: FileId, body: &str) -> Vec<String> {
+    read(file, body, 0..body.len())
+        .0
+        .steps
+        .into_iter()
+        .map(|s| s.name)
+        .collect()
+}
+
 /// Reads the textual SFC in `src[body]`. Diagnostics (E0302 for text that is not textual SFC, E3123 for a
 /// bad qualifier or missing duration, E3120 for
 /// a transition naming an unknown step, E3124 without an initial step, E3128 for a second initial step,

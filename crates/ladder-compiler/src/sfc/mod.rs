@@ -423,6 +423,25 @@ pub fn lower_chart<'e, 'a>(
     (out, hidden.vars)
 }
 
+/// Renames `Step.X` and `Step.T` of the chart's `steps` in `stmts` to the chart's hidden variables
+/// (as [`lower_chart`] does in its own conditions and actions): for the POU's own actions (an
+/// `ACTIONS` block after the POU, a TwinCAT POU's `<Action>` objects) once the chart's `CAL`s of
+/// them are inlined. IEC 61131-3 ed. 3 8.3.2 (ed. 2 2.6.2): `step.X`, `step.T`; Beckhoff Infosys
+/// "Implicit variables" and CODESYS "Implicit Variables": `<stepname>.x`, `<stepname>.t`, readable
+/// in every action of the SFC object (`._x`, `._t` are not: TwinCAT's internal copies).
+pub fn rename_step_flags(stmts: &mut [IlStmt], steps: &[String]) {
+    if steps.is_empty() {
+        return;
+    }
+    let mut renames = Renames::default();
+    for s in steps {
+        let k = s.to_ascii_uppercase();
+        renames.fields.insert((k.clone(), "X".into()), names::x(s));
+        renames.fields.insert((k, "T".into()), names::t(s));
+    }
+    renames.apply(stmts);
+}
+
 /// The chart's reset by CODESYS's SFCInit / SFCReset (either TRUE, `__sfc_rst`): the initial steps
 /// active, every other step inactive, every step timer stopped and `Step.T` zero, so that the
 /// initial steps count from 0 again in this scan. Returns `__sfc_rst` (it also resets the stored

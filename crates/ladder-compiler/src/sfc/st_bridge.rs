@@ -37,7 +37,7 @@ pub enum Delivered {
     Assigned,
 }
 
-const STEP_TYPE: &str = "__SFC_STEP";
+const STEP_TYPE: &str = il_frontend::st::sfc::STEP_TYPE;
 const ACTION_TYPE: &str = "__SFC_ACTION";
 
 /// The declarations the ST lowering needs: the project's, plus the step and action flag types (declared
@@ -57,14 +57,7 @@ fn build_declarations(index: &Index, file_span: Span) -> Declarations {
             file_span,
         )
     };
-    d.add_type(TypeDecl {
-        name: Ident::new(STEP_TYPE, file_span),
-        def: TypeDef::Struct {
-            fields: vec![field("X", "BOOL"), field("T", "TIME")],
-        },
-        union: false,
-        span: file_span,
-    });
+    d.add_type(il_frontend::st::sfc::step_type(file_span));
     d.add_type(TypeDecl {
         name: Ident::new(ACTION_TYPE, file_span),
         def: TypeDef::Struct {

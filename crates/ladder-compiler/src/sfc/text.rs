@@ -111,7 +111,9 @@ fn attr_value(s: &str) -> String {
         .replace('<', "&lt;")
 }
 
-/// Lowers the textual SFC body `src[body]` of `pou` (file `file`). Diagnostics go to `diags`; a chart with
+/// Lowers the textual SFC body `src[body]` of `pou` (file `file`): its code, its hidden variables and
+/// the names of its steps (whose `Step.X`/`Step.T` the POU's own actions may read, renamed by
+/// [`super::rename_step_flags`] once they are inlined). Diagnostics go to `diags`; a chart with
 /// errors in its structure gives no code.
 pub fn lower(
     file: FileId,
@@ -120,7 +122,7 @@ pub fn lower(
     pou: &Pou,
     index: &Index,
     diags: &mut Diagnostics,
-) -> (Vec<IlStmt>, Vec<VarDecl>) {
+) -> (Vec<IlStmt>, Vec<VarDecl>, Vec<String>) {
     let pou_name = pou.name.name.clone();
     // Holds the in-memory elements built below.
     let arena = Arena::new();
@@ -142,10 +144,10 @@ pub fn lower(
                  between calls, so it cannot remember its active steps (make it a function block or a program)"
             ),
         );
-        return (Vec::new(), Vec::new());
+        return (Vec::new(), Vec::new(), Vec::new());
     }
     if broken {
-        return (Vec::new(), Vec::new());
+        return (Vec::new(), Vec::new(), Vec::new());
     }
     // Start tags of the in-memory elements (the attribute readers parse them).
     let action_tags: Vec<String> = tc
@@ -310,7 +312,9 @@ pub fn lower(
         flags: flag_marks(file, src, &body),
     };
     let sfc_el = element("SFC", "SFC", body.start..body.start);
-    super::lower_chart(&mut ctx, index, &pou_el, pou, &sfc_el, chart)
+    let step_names = chart.steps.iter().map(|s| s.name.clone()).collect();
+    let (code, hidden) = super::lower_chart(&mut ctx, index, &pou_el, pou, &sfc_el, chart);
+    (code, hidden, step_names)
 }
 
 /// How the TwinCAT reader (`crate::twincat_sfc`) passes on a chart's enabled SFC flags (its POU's

@@ -1,0 +1,314 @@
+//! SFC charts of round 31 (issue #13), found in vetorres-uma/TC3_Lampara's SFC lamp blocks:
+//! - a TwinCAT chart of one step (initial step, its action, a transition and a jump back to it:
+//!   valid SFC, IEC 61131-3 ed. 2 2.6.3, a transition may lead back to the step it leaves) runs its
+//!   action; before, its `<Action>` objects were refused (E0304 at an unrelated line of the XML
+//!   archive) and the step named an unknown action (E3122);
+//! - `Step.x` and `Step.t` in the actions of a chart's POU (a TwinCAT `<Action>`, an `ACTIONS`
+//!   block after a textual chart) read the step's active flag and elapsed time (IEC 61131-3 ed. 3
+//!   8.3.2, ed. 2 2.6.2: `step.X`, `step.T`; Beckhoff Infosys "Implicit variables" and CODESYS
+//!   "Implicit Variables": `<stepname>.x`, `<stepname>.t`); before: E1001 "undeclared name";
+//! - an initial value read from another variable in a POU whose body is a chart is computed at
+//!   run time with W1433, as in an ST POU (README "Source text details"); before: E1025.
+//!
+//! The TwinCAT files are written here, archive object by archive object (the attribute GUIDs are
+//! the ones `ladder_compiler::twincat_sfc` documents).
+
+mod common;
+use common::{check_text, column, run_stimulated};
+
+const NAME: &str = "38391c6d-6d4a-42f8-8ee7-9f45e5adafa8";
+const INITIAL: &str = "6844a48e-46c2-4cc8-a185-a478f3b99cc0";
+const MAIN_ACTION: &str = "700a583f-b4d4-43e4-8c14-629c7cd3bec8";
+const QUALIFIER: &str = "e174fc0d-80b0-4a9e-a530-ca239c249a50";
+
+/// One `SFCAttribute` of an archive object.
+fn attr(guid: &str, value: &str) -> String {
+    format!(
+        "<o><v n=\"AttributeId\">{{{guid}}}</v><o n=\"Value\" t=\"StringValue\">\
+         <v n=\"Value\">\"{value}\"</v><v n=\"DefaultValue\">\"\"</v></o></o>\n"
+    )
+}
+
+/// A step: its name, whether it is the initial step, its step action (`MainAction`, empty for
+/// none) and its IEC associations (action, qualifier).
+fn step(name: &str, initial: bool, main: &str, iec: &[(&str, &str)]) -> String {
+    let assocs: String = iec
+        .iter()
+        .map(|(a, q)| {
+            format!(
+                "<o><l2 n=\"Attributes\" cet=\"SFCAttribute\">\n{}{}</l2></o>\n",
+                attr(NAME, a),
+                attr(QUALIFIER, q)
+            )
+        })
+        .collect();
+    let initial = if initial {
+        format!(
+            "<o><v n=\"AttributeId\">{{{INITIAL}}}</v><o n=\"Value\" t=\"BoolValue\">\
+             <v n=\"Value\">\"TRUE\"</v><v n=\"DefaultValue\">\"FALSE\"</v></o></o>\n"
+        )
+    } else {
+        String::new()
+    };
+    format!(
+        "<o t=\"SFCStep\">\n<n n=\"EmbeddedMainAction\" />\n\
+         <o n=\"ElementList\" t=\"SFCElementList\">\n<l2 n=\"InnerList\" cet=\"SFCActionAssociation\">\n\
+         {assocs}</l2>\n</o>\n<l2 n=\"Attributes\" cet=\"SFCAttribute\">\n{}{initial}{}</l2>\n</o>\n",
+        attr(NAME, name),
+        attr(MAIN_ACTION, main)
+    )
+}
+
+/// A transition whose condition is the ST expression `cond`.
+fn transition(cond: &str) -> String {
+    format!(
+        "<o t=\"SFCTransition\">\n<n n=\"EmbeddedTransition\" />\n\
+         <l2 n=\"Attributes\" cet=\"SFCAttribute\">\n{}</l2>\n</o>\n",
+        attr(NAME, cond)
+    )
+}
+
+/// A jump to `target`.
+fn jump(target: &str) -> String {
+    format!(
+        "<o t=\"SFCJump\">\n<l2 n=\"Attributes\" cet=\"SFCAttribute\">\n{}</l2>\n</o>\n",
+        attr(NAME, target)
+    )
+}
+
+/// A `.TcPOU` of declaration `decl`, an SFC body of the archive objects `elements` (in sequence)
+/// and the ST actions `actions` (name, text).
+fn tc_pou(name: &str, decl: &str, elements: &[String], actions: &[(&str, &str)]) -> String {
+    let actions: String = actions
+        .iter()
+        .map(|(n, st)| {
+            format!(
+                "    <Action Name=\"{n}\" Id=\"{{00000000-0000-0000-0000-000000000001}}\">\n\
+                 <Implementation>\n<ST><![CDATA[{st}]]></ST>\n</Implementation>\n</Action>\n"
+            )
+        })
+        .collect();
+    format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n\
+         <TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"3.1.4024.12\">\n\
+         <POU Name=\"{name}\" Id=\"{{00000000-0000-0000-0000-000000000002}}\" SpecialFunc=\"None\">\n\
+         <Declaration><![CDATA[{decl}]]></Declaration>\n<Implementation>\n<SFC>\n<XmlArchive>\n<Data>\n\
+         <o xml:space=\"preserve\" t=\"SFCImplementationObject\">\n<o n=\"Root\" t=\"SFCSegment\">\n\
+         <o n=\"ElementList\" t=\"SFCElementList\">\n<l2 n=\"InnerList\">\n{}</l2>\n</o>\n</o>\n</o>\n\
+         </Data>\n</XmlArchive>\n</SFC>\n</Implementation>\n{actions}</POU>\n</TcPlcObject>\n",
+        elements.concat()
+    )
+}
+
+/// The trace rows of `watch`'s values, the cycle and time columns left out.
+fn rows(trace: &str) -> Vec<String> {
+    trace
+        .lines()
+        .skip(1)
+        .filter(|l| l.starts_with(|c: char| c.is_ascii_digit()))
+        .map(|l| l.split(',').skip(2).collect::<Vec<_>>().join(","))
+        .collect()
+}
+
+/// `ladderc run` of `src` written to `dir/name` with the stimulus rows `stimulus`, 10 ms scans.
+fn run_file(name: &str, src: &str, cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join(name);
+    std::fs::write(&file, src).unwrap();
+    run_stimulated(&file, cycles, stimulus, watch)
+}
+
+/// TC3_Lampara's one-step charts: `S0` (initial) with an IEC association `aCount(N)`, the
+/// transition `bGo` and a jump back to `S0`; `aCount` counts its scans. The chart checks clean
+/// and the action runs in every scan, also while the transition leaves `S0` and enters it again.
+/// Before round 31: exit 1, E3122 "step `S0` names action `aCount`, which is neither an action
+/// of the POU nor a BOOL variable" and E0304 "an ACTIONS block is supported only right after a
+/// POU whose body is ST or IL", located at an unrelated `DefaultValue` line of the archive.
+#[test]
+fn a_one_step_twincat_chart_runs_its_action() {
+    let src = tc_pou(
+        "P_One",
+        "PROGRAM P_One\nVAR\n\tbGo : BOOL;\n\tnCount : INT;\nEND_VAR\n",
+        &[
+            step("S0", true, "", &[("aCount", "N")]),
+            transition("bGo"),
+            jump("S0"),
+        ],
+        &[("aCount", "nCount := nCount + 1;")],
+    );
+    let (code, lines) = check_text("P_One.TcPOU", &src);
+    assert_eq!(code, Some(0), "{lines:?}");
+    assert!(lines.iter().all(|l| !l.contains("error[")), "{lines:?}");
+    let (trace, _) = run_file(
+        "P_One.TcPOU",
+        &src,
+        5,
+        "2,P_One.bGo,1\n3,P_One.bGo,0\n",
+        "P_One.nCount,P_One.__sfc_X_S0",
+    );
+    assert_eq!(rows(&trace), ["1,1", "2,1", "3,1", "4,1", "5,1"]);
+}
+
+/// The same chart with the step action TC3_Lampara writes (`MainAction` `a_Lamp`, a CODESYS step
+/// action) reading the step's flag: `bLamp := S0.x AND bButton;` follows the button in every scan
+/// (before round 31: E3122 + E0304, and E1001 "undeclared name `S0`").
+#[test]
+fn a_one_step_chart_s_step_action_reads_its_step_flag() {
+    let src = tc_pou(
+        "FB_Lamp",
+        "FUNCTION_BLOCK FB_Lamp\nVAR_INPUT\n\tbButton : BOOL;\n\tbGo : BOOL;\nEND_VAR\n\
+         VAR_OUTPUT\n\tbLamp : BOOL;\nEND_VAR\n",
+        &[
+            step("S0", true, "a_Lamp", &[]),
+            transition("bGo"),
+            jump("S0"),
+        ],
+        &[("a_Lamp", "bLamp := S0.x AND bButton;")],
+    );
+    let main =
+        "PROGRAM MAIN\nVAR\n\tbButton : BOOL;\n\tlamp : FB_Lamp;\n\tbLamp : BOOL;\nEND_VAR\n\
+                lamp(bButton := bButton);\nbLamp := lamp.bLamp;\nEND_PROGRAM\n";
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("FB_Lamp.TcPOU"), &src).unwrap();
+    std::fs::write(dir.path().join("main.st"), main).unwrap();
+    let (trace, stderr) = common::run_stimulated_files(
+        &[dir.path().join("main.st"), dir.path().join("FB_Lamp.TcPOU")],
+        &["--cycle-ms", "10"],
+        6,
+        "2,MAIN.bButton,1\n4,MAIN.bButton,0\n",
+        "MAIN.bLamp",
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
+    assert_eq!(column(&trace, "MAIN.bLamp"), [0.0, 0.0, 1.0, 1.0, 0.0, 0.0]);
+}
+
+/// The steps' flags in the actions of a two-step TwinCAT chart: `Idle` -> `bGo` -> `Fill` ->
+/// `bDone` -> jump `Idle`. `Fill`'s step action copies `Fill.t` and `Fill.x`, and `Idle.x`
+/// (inactive there); `Idle`'s copies `Idle.x`. Scan by scan (10 ms; a stimulus row of cycle `n`
+/// shows from the trace's row `n + 1`): `bGo` enters `Fill`, whose time counts 0, 10, 20 ms while
+/// it stays, and `bDone` leaves it (its action does not run in that scan, the copies keep their
+/// values). Before round 31: E1001 "undeclared name
+/// `Fill`".
+#[test]
+fn step_x_and_step_t_in_a_twincat_chart_s_actions_are_the_step_s_flag_and_time() {
+    let src = tc_pou(
+        "P_Flags",
+        "PROGRAM P_Flags\nVAR\n\tbGo : BOOL;\n\tbDone : BOOL;\n\ttFill : TIME;\n\tbFillX : BOOL;\n\
+         \tbIdleInFill : BOOL;\n\tbIdleX : BOOL;\nEND_VAR\n",
+        &[
+            step("Idle", true, "aIdle", &[]),
+            transition("bGo"),
+            step("Fill", false, "aFill", &[]),
+            transition("bDone"),
+            jump("Idle"),
+        ],
+        &[
+            ("aIdle", "bIdleX := Idle.x;"),
+            (
+                "aFill",
+                "tFill := Fill.t;\nbFillX := Fill.X;\nbIdleInFill := Idle.x;",
+            ),
+        ],
+    );
+    let (trace, stderr) = run_file(
+        "P_Flags.TcPOU",
+        &src,
+        7,
+        "2,P_Flags.bGo,1\n3,P_Flags.bGo,0\n5,P_Flags.bDone,1\n6,P_Flags.bDone,0\n",
+        "P_Flags.tFill,P_Flags.bFillX,P_Flags.bIdleInFill,P_Flags.bIdleX,P_Flags.__sfc_X_Fill",
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
+    // tFill (ms), Fill.x copy, Idle.x seen in Fill, Idle.x copy, Fill active
+    assert_eq!(
+        rows(&trace),
+        [
+            "T#0ms,0,0,1,0",
+            "T#0ms,0,0,1,0",
+            "T#0ms,1,0,1,1",
+            "T#10ms,1,0,1,1",
+            "T#20ms,1,0,1,1",
+            "T#20ms,1,0,1,0",
+            "T#20ms,1,0,1,0",
+        ]
+    );
+}
+
+/// The same flags in a textual chart's `ACTIONS` block (CODESYS's and TwinCAT's form of a
+/// chart's actions in an `.st` file): `S1.T` and `S1.X` in `aRun`. Before round 31: E1001
+/// "undeclared name `S1`" (only the chart's own `ACTION ... END_ACTION` elements read them).
+#[test]
+fn step_flags_in_an_actions_block_after_a_textual_chart() {
+    let src = "PROGRAM P_Text\nVAR\n\tgo : BOOL;\n\ttRun : TIME;\n\tbRun : BOOL;\nEND_VAR\n\
+               INITIAL_STEP S0 :\nEND_STEP\nTRANSITION FROM S0 TO S1 := go;\nEND_TRANSITION\n\
+               STEP S1 :\n\taRun(N);\nEND_STEP\nTRANSITION FROM S1 TO S0 := NOT go;\nEND_TRANSITION\n\
+               END_PROGRAM\nACTIONS\nACTION aRun:\ntRun := S1.T;\nbRun := S1.X;\nEND_ACTION\n\
+               END_ACTIONS\n";
+    let (trace, stderr) = run_file(
+        "p_text.st",
+        src,
+        5,
+        "2,P_Text.go,1\n",
+        "P_Text.tRun,P_Text.bRun",
+    );
+    assert!(!stderr.contains("error["), "{stderr}");
+    assert_eq!(
+        rows(&trace),
+        ["T#0ms,0", "T#0ms,0", "T#0ms,1", "T#10ms,1", "T#20ms,1"]
+    );
+}
+
+/// TC3_Lampara's `ManiobrasPendientes : UINT := ManiobrasTotales;` in a block whose body is a
+/// chart: the initial value is read from the other variable when the instance is initialised,
+/// with one W1433 (as in an ST block), in a TwinCAT chart and in a textual one. Before round 31:
+/// E1025 "`nTotal` is not a constant known here".
+#[test]
+fn an_initial_value_read_from_another_variable_in_a_chart_s_block_is_computed_at_run_time() {
+    let decl = "FUNCTION_BLOCK FB_Count\nVAR_INPUT\n\tbPress : BOOL;\nEND_VAR\n\
+                VAR\n\tnTotal : UINT := 3;\n\tnLeft : UINT := nTotal;\nEND_VAR\n";
+    let tc = tc_pou(
+        "FB_Count",
+        decl,
+        &[
+            step("S0", true, "aCount", &[]),
+            transition("FALSE"),
+            jump("S0"),
+        ],
+        &[(
+            "aCount",
+            "IF bPress AND nLeft > 0 THEN\n\tnLeft := nLeft - 1;\nEND_IF",
+        )],
+    );
+    let st = format!(
+        "{decl}INITIAL_STEP S0 :\n\taCount(N);\nEND_STEP\nTRANSITION FROM S0 TO S0 := FALSE;\n\
+         END_TRANSITION\nACTION aCount:\nIF bPress AND nLeft > 0 THEN\n\tnLeft := nLeft - 1;\n\
+         END_IF;\nEND_ACTION\nEND_FUNCTION_BLOCK\n"
+    );
+    let main = "PROGRAM MAIN\nVAR\n\tbPress : BOOL;\n\tc : FB_Count;\n\tnLeft : UINT;\nEND_VAR\n\
+                c(bPress := bPress);\nnLeft := c.nLeft;\nEND_PROGRAM\n";
+    for (name, text) in [
+        ("FB_Count.TcPOU", tc.as_str()),
+        ("fb_count.st", st.as_str()),
+    ] {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join(name), text).unwrap();
+        std::fs::write(dir.path().join("main.st"), main).unwrap();
+        let (code, lines) = common::check_files(&[(name, text), ("main.st", main)]);
+        assert_eq!(code, Some(0), "{name}: {lines:?}");
+        let (trace, stderr) = common::run_stimulated_files(
+            &[dir.path().join("main.st"), dir.path().join(name)],
+            &["--cycle-ms", "10"],
+            6,
+            "2,MAIN.bPress,1\n",
+            "MAIN.nLeft",
+        );
+        let w: Vec<&str> = stderr.lines().filter(|l| l.contains("W1433")).collect();
+        assert_eq!(w.len(), 1, "{name}: {stderr}");
+        assert!(w[0].contains("`nLeft`"), "{name}: {stderr}");
+        assert!(!stderr.contains("error["), "{name}: {stderr}");
+        assert_eq!(
+            column(&trace, "MAIN.nLeft"),
+            [3.0, 3.0, 2.0, 1.0, 0.0, 0.0],
+            "{name}"
+        );
+    }
+}
