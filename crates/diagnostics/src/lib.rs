@@ -40,6 +40,9 @@ pub struct Diagnostics {
     list: Vec<Diagnostic>,
     /// The hashes of the diagnostics pushed (code, severity, place, message).
     seen: std::collections::HashSet<u64>,
+    /// Files that are copies of another, byte for byte (a block with generic constants built once
+    /// per set of values): their diagnostics are placed in the original ([`Diagnostics::read_as`]).
+    copies: std::collections::HashMap<FileId, FileId>,
 }
 
 /// The list alone (the hashes are bookkeeping): two sinks that hold the same diagnostics print the
@@ -59,8 +62,19 @@ impl Diagnostics {
     }
     /// Adds one, unless an equal one is there (E1089, a name with letters beyond ASCII: one per
     /// name and file, at its first use).
-    pub fn push(&mut self, d: Diagnostic) {
+    pub fn push(&mut self, mut d: Diagnostic) {
         use std::hash::{Hash, Hasher};
+        if !self.copies.is_empty() {
+            let original = |sp: &mut Span| {
+                if let Some(f) = self.copies.get(&sp.file) {
+                    sp.file = *f;
+                }
+            };
+            if let Some(sp) = d.span.as_mut() {
+                original(sp);
+            }
+            d.labels.iter_mut().for_each(|l| original(&mut l.span));
+        }
         let mut h = std::collections::hash_map::DefaultHasher::new();
         if d.code.0 == "E1089" {
             (d.code, d.span.map(|s| s.file), &d.message).hash(&mut h);
@@ -70,6 +84,11 @@ impl Diagnostics {
         if self.seen.insert(h.finish()) {
             self.list.push(d);
         }
+    }
+    /// From now on, places the diagnostics of `copy` (a file whose text is `original`'s, byte for
+    /// byte, read again) in `original`, where one equal to a diagnostic of `original` is left out.
+    pub fn read_as(&mut self, copy: FileId, original: FileId) {
+        self.copies.insert(copy, original);
     }
     /// Adds several (each as [`Diagnostics::push`]).
     pub fn extend(&mut self, ds: impl IntoIterator<Item = Diagnostic>) {

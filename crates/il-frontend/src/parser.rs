@@ -1229,6 +1229,16 @@ impl<'s> Ctx<'s> {
         l: usize,
         r: usize,
     ) -> Vec<VarDecl> {
+        // a generic constant of a block built with an instance's values (`FB_Buf<10>`:
+        // `st::generic_blocks`): that value in place of its initial value
+        let init = match crate::st::generic_blocks::instance_value(&names, self.in_constant_block) {
+            Some(v) => Some(Initializer::Value(Operand::Literal(Box::new(Literal {
+                kind: LiteralKind::Int(v),
+                type_prefix: None,
+                span: names.first().map(|n| n.span).unwrap_or_default(),
+            })))),
+            None => init,
+        };
         // `R_EDGE` / `F_EDGE` (sema checks where they are allowed).
         let edge = edge.map(|(s, e)| {
             if self.text(s, e).eq_ignore_ascii_case("F_EDGE") {

@@ -71,6 +71,7 @@ pub mod codesys_v23_io;
 pub mod depfile;
 pub mod encoding;
 pub mod fuzzing;
+pub mod generic_blocks;
 pub mod loop_guard;
 pub mod lsp;
 pub mod motion_in_struct;

@@ -324,6 +324,8 @@ impl Session {
         let _defines = il_frontend::st::ProjectDefines::set(defines);
         self.diags.extend(expand_diags);
         let mut twincat_units: Vec<bool> = Vec::new();
+        // the files that declare blocks with generic constants (`generic_blocks`)
+        let mut generic_texts: Vec<crate::generic_blocks::GenericText> = Vec::new();
         let mut twincat_lists: Vec<(usize, String)> = Vec::new();
         // text files (`.st`, `.txt`) that may be a CODESYS global variable list object
         let mut text_lists: Vec<(usize, String)> = Vec::new();
@@ -693,6 +695,14 @@ impl Session {
                     );
                     continue;
                 }
+                if file_lang == Lang::St && crate::generic_blocks::declares_generic_constants(src) {
+                    generic_texts.push(crate::generic_blocks::GenericText {
+                        file,
+                        unit: units.len(),
+                        text: src.to_string(),
+                        implicit: implicit.to_string(),
+                    });
+                }
                 let mut local = Diagnostics::new();
                 let (unit, bodies, entries) =
                     il_frontend::st::file::parse_text(file, src, implicit, file_lang, &mut local);
@@ -767,7 +777,7 @@ impl Session {
         self.reparse_with_other_files_constants(
             waiting,
             offered,
-            names,
+            names.clone(),
             &mut units,
             &mut pending,
             &mut var_config,
@@ -783,6 +793,15 @@ impl Session {
             }
         }
         crate::text_lists::name_text_lists(&mut units, &text_lists);
+        // `fb : FB_Buf<10>;`: a block of its own for each set of generic values
+        crate::generic_blocks::build(
+            self,
+            &generic_texts,
+            &names,
+            &mut units,
+            &mut pending,
+            &mut twincat_units,
+        );
         for c in v4_configs {
             // (the configuration of a project.json whose POUs were not read would name them)
             if failed_json.contains(&c.source) {

@@ -293,7 +293,7 @@ pub(super) fn is_var_keyword(w: &str) -> bool {
             | "VAR_CONFIG"
             | "VAR_INST"
             | "VAR_STAT"
-            // TwinCAT's generic constants (`generic_constants`: E1081, read as VAR)
+            // TwinCAT's generic constants (`generic_constants`: read as VAR)
             | "VAR_GENERIC"
     )
 }
@@ -1595,7 +1595,12 @@ pub fn parse_text(
     diags: &mut Diagnostics,
 ) -> (CompilationUnit, Vec<PendingBody>, Vec<ConfigEntry>) {
     let before = diags.len();
-    let out = parse_text_as_read(file, src, implicit_name, lang, diags);
+    let mut out = parse_text_as_read(file, src, implicit_name, lang, diags);
+    // `fb : FB_X<10>;`: the instance's generic values on its type (`generic_constants`)
+    if lang == Lang::St && src.contains('<') {
+        let instances = super::generic_constants::generic_instances(src, &lex(src).0);
+        super::generic_constants::name_generic_instances(&instances, &mut out.0, &mut out.1);
+    }
     // `ARRAY[0..RobotLibParams.TOOL_MAX - 1]`: the bound's qualifier was blanked (`list_bounds`)
     // before the constant was looked for; E0022 names it as written, and the list
     for d in diags.since_mut(before) {
@@ -1693,8 +1698,8 @@ fn parse_text_as_read(
     let mut keyword_fields = Vec::new();
     let (uninstanced, unextended, unstatic): (String, String, String);
     let mut stat_at = Vec::new();
-    // `VAR_GENERIC CONSTANT` and `fb : FB_X<10>;`: one E1081 each, read as `VAR CONSTANT` and
-    // a plain instance (`generic_constants`)
+    // `VAR_GENERIC CONSTANT` and `fb : FB_X<10>;`: read as `VAR CONSTANT` and a plain instance,
+    // whose values [`parse_text`] notes on its type (`generic_constants`)
     let ungeneric;
     let src = match super::generic_constants::generic_constants(file, src, &toks, diags) {
         Some(t) => {

@@ -347,6 +347,9 @@ pub enum Problem {
     /// A time-of-day or date-and-time literal without seconds (`TOD#12:00`): read as `:00`, as
     /// CODESYS reads it; warning W1445 (IEC 61131-3 requires the seconds).
     NoSeconds(Range<usize>),
+    /// A decimal literal ending in its point (`10.`, CODESYS V2.3): read as the REAL `10.0`, as
+    /// CODESYS compiles it; warning W1459 (IEC 61131-3 requires a digit after the point).
+    TrailingPoint(Range<usize>),
 }
 
 /// Lexes `src`; the token list always ends with [`Tok::Eof`].
@@ -374,6 +377,17 @@ pub fn lex(src: &str) -> (Vec<Token>, Vec<Problem>) {
                 Tok::Time(t)
             }
             Ok(Raw::Prefixed(None)) => Tok::TypePrefix,
+            // `10.`: the REAL 10.0 (W1459, see `trailing_point`)
+            Ok(Raw::Int(v)) if trailing_point(src, &range, out.last()) => {
+                lx.bump(1);
+                let range = range.start..range.end + 1;
+                problems.push(Problem::TrailingPoint(range.clone()));
+                out.push(Token {
+                    tok: Tok::Real(v as f64),
+                    range,
+                });
+                continue;
+            }
             Ok(Raw::Int(v)) => Tok::Int(v),
             Ok(Raw::Real(v)) => Tok::Real(v),
             Ok(Raw::Str((w, s))) => match out.last() {
@@ -852,6 +866,37 @@ pub fn flat_comment_diagnostic(whole: crate::Span) -> diagnostics::Diagnostic {
     .with_hint("IEC 61131-3 edition 2 and matiec end a comment at its first `*)`, edition 3 may nest comments; close each `(*` with its own `*)` if the text after this `*)` belongs to the comment")
 }
 
+/// A decimal integer literal at `range` followed by a point that ends the number (`10.;`,
+/// `10. * x`, `10.)`): CODESYS V2.3 compiles it as the REAL `10.0` (its exports hold `x / 10.;`),
+/// where IEC 61131-3's `real_literal` needs a digit after the point. Not when a digit, a second
+/// point (`1..10`), a letter or `_` follows the point, nor after a `.` (`w.1`, a bit access), nor for
+/// a based literal (`16#FF`).
+fn trailing_point(src: &str, range: &Range<usize>, before: Option<&Token>) -> bool {
+    let Some(digits) = src.get(range.clone()) else {
+        return false;
+    };
+    let Some(rest) = src.get(range.end..).and_then(|r| r.strip_prefix('.')) else {
+        return false;
+    };
+    let ends = rest
+        .chars()
+        .next()
+        .is_none_or(|c| !(c.is_alphanumeric() || c == '_' || c == '.' || c == '%'));
+    ends && digits.bytes().all(|b| b.is_ascii_digit() || b == b'_')
+        && !before.is_some_and(|t| t.tok == Tok::Dot)
+}
+
+/// W1459 for a REAL literal ending in its point (`10.`) at `span`, read as `10.0`.
+pub fn trailing_point_diagnostic(span: crate::Span, text: &str) -> diagnostics::Diagnostic {
+    use diagnostics::{code, Diagnostic};
+    Diagnostic::warning(
+        code::W1459,
+        format!("`{text}` has no digit after its point: read as the REAL `{text}0`, as CODESYS reads it"),
+    )
+    .at(span)
+    .with_hint(format!("IEC 61131-3 requires a digit after the point: write `{text}0`"))
+}
+
 /// W1445 for a time-of-day or date-and-time literal without seconds (`TOD#12:00`) at `span`: the
 /// same warning in ST, IL and PLCopen XML initial values.
 pub fn no_seconds_diagnostic(span: crate::Span, text: &str) -> diagnostics::Diagnostic {
@@ -916,6 +961,18 @@ mod tests {
 
     fn toks(src: &str) -> Vec<Tok> {
         lex(src).0.into_iter().map(|t| t.tok).collect()
+    }
+
+    #[test]
+    fn a_number_ending_in_its_point_is_a_real() {
+        use Tok::*;
+        assert_eq!(toks("x / 10.;"), vec![Ident, Slash, Real(10.0), Semi, Eof]);
+        assert_eq!(lex("10.").1, vec![Problem::TrailingPoint(0..3)]);
+        // a range, a bit, a field, a real with digits: unchanged
+        assert_eq!(toks("1..5"), vec![Int(1), DotDot, Int(5), Eof]);
+        assert_eq!(toks("w.1.x"), vec![Ident, Dot, Int(1), Dot, Ident, Eof]);
+        assert_eq!(toks("1.5"), vec![Real(1.5), Eof]);
+        assert_eq!(toks("16#F."), vec![Int(15), Dot, Eof]);
     }
 
     #[test]

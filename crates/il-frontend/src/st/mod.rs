@@ -23,6 +23,7 @@ mod conflict_markers;
 pub mod fb_init;
 pub mod fb_init_args;
 pub mod file;
+pub mod generic_blocks;
 mod generic_constants;
 mod generic_headers;
 mod hash_directives;

@@ -229,6 +229,13 @@ impl<'s, 'd> Parser<'s, 'd> {
                     .push(super::lexer::no_seconds_diagnostic(span, &text));
                 return;
             }
+            Problem::TrailingPoint(r) => {
+                let span = self.span(r.start, r.end);
+                let text = self.src[r].to_string();
+                self.diags
+                    .push(super::lexer::trailing_point_diagnostic(span, &text));
+                return;
+            }
             Problem::FlatComment(r) => {
                 let whole = self.span(r.start, r.end);
                 self.diags
