@@ -127,7 +127,14 @@ impl NetLowering<'_, '_> {
             };
             let Some(mut v) = v else {
                 if !pin.wires.is_empty() {
-                    // Fed only by elements that could not be lowered (already reported).
+                    // Fed only by elements that could not be lowered (already reported); the
+                    // box's own instance is still checked (its E3016 is a cause of its own)
+                    if matches!(
+                        bt,
+                        BlockType::UserFb(_) | BlockType::StdFb(_) | BlockType::Motion
+                    ) {
+                        let _ = self.fb_instance(ctx, i, span, type_name, instance.as_ref());
+                    }
                     self.poisoned.insert(i);
                     return;
                 }
@@ -224,46 +231,9 @@ impl NetLowering<'_, '_> {
         };
         match bt {
             BlockType::UserFb(_) | BlockType::StdFb(_) | BlockType::Motion => {
-                let Some((inst_name, inst_span)) = instance else {
-                    let d = self.diag(
-                        ctx,
-                        code::E3016,
-                        i,
-                        span,
-                        format!("function block {type_name} has no instance name"),
-                    );
-                    ctx.report(d);
-                    self.poisoned.insert(i);
+                let Some(inst) = self.fb_instance(ctx, i, span, type_name, instance.as_ref())
+                else {
                     return;
-                };
-                let inst = match values::var_ref(inst_name, *inst_span) {
-                    Some(r)
-                        if self
-                            .pou
-                            .var_type(&r)
-                            .is_some_and(|t| self.pou.is_fb_type(&t)) =>
-                    {
-                        r
-                    }
-                    _ => {
-                        let d = self
-                            .diag(
-                                ctx,
-                                code::E3016,
-                                i,
-                                *inst_span,
-                                format!(
-                                    "instance `{inst_name}` of {type_name} is not declared in `{}`",
-                                    self.pou.pou
-                                ),
-                            )
-                            .with_hint(format!(
-                                "declare `{inst_name} : {type_name};` in the POU's variables"
-                            ));
-                        ctx.report(d);
-                        self.poisoned.insert(i);
-                        return;
-                    }
                 };
                 self.actions.push(Action::Fb {
                     inst: inst.clone(),
@@ -636,4 +606,62 @@ fn shown_callee(r: &VarRef) -> String {
         }
     }
     s
+}
+
+impl NetLowering<'_, '_> {
+    /// The declared instance a function block box `i` calls, or `None` after its E3016 (no
+    /// `instanceName`, or one the POU does not declare as a function block); the box is poisoned
+    /// then. Checked also for a box whose inputs could not be lowered, so that each box's own
+    /// error comes out in the same run as its inputs' (before issue #13's round 31 a second box
+    /// fed by the first's output showed its E3016 only after the first was fixed).
+    pub(super) fn fb_instance(
+        &mut self,
+        ctx: &mut Ctx,
+        i: usize,
+        span: Span,
+        type_name: &str,
+        instance: Option<&(graph::Text<'_>, Span)>,
+    ) -> Option<VarRef> {
+        let Some((inst_name, inst_span)) = instance else {
+            let d = self.diag(
+                ctx,
+                code::E3016,
+                i,
+                span,
+                format!("function block {type_name} has no instance name"),
+            );
+            ctx.report(d);
+            self.poisoned.insert(i);
+            return None;
+        };
+        match values::var_ref(inst_name, *inst_span) {
+            Some(r)
+                if self
+                    .pou
+                    .var_type(&r)
+                    .is_some_and(|t| self.pou.is_fb_type(&t)) =>
+            {
+                Some(r)
+            }
+            _ => {
+                let d = self
+                    .diag(
+                        ctx,
+                        code::E3016,
+                        i,
+                        *inst_span,
+                        format!(
+                            "instance `{inst_name}` of {type_name} is not declared in `{}`",
+                            self.pou.pou
+                        ),
+                    )
+                    .with_hint(format!(
+                        "declare `{inst_name} : {type_name};` in the POU's variables"
+                    ));
+                ctx.report(d);
+                self.poisoned.insert(i);
+                None
+            }
+        }
+    }
 }

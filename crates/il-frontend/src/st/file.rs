@@ -1645,6 +1645,11 @@ fn parse_text_as_read(
             diags.push(d);
             return (CompilationUnit::default(), pending, Vec::new());
         }
+        // a rung drawn in text (`+--[ ]--( )--`): one E1091, not an E0001 per drawing character
+        if let Some(d) = super::text_ladder::text_ladder(file, src) {
+            diags.push(d);
+            return (CompilationUnit::default(), pending, Vec::new());
+        }
         first_try = Some((unit, local));
     }
     // `#ifdef X` ... `#else` ... `#endif` (B&R's preprocessor): the sections not compiled and the
@@ -1664,6 +1669,11 @@ fn parse_text_as_read(
     if lang == Lang::St {
         if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems)
             .or_else(|| super::scl::simotion_unit(file, src, &toks))
+            .or_else(|| {
+                (!problems.is_empty())
+                    .then(|| super::text_ladder::text_ladder(file, src))
+                    .flatten()
+            })
         {
             diags.push(d);
             return (CompilationUnit::default(), pending, Vec::new());

@@ -38,6 +38,7 @@ pub(crate) mod method_in_out;
 mod mixed_args;
 mod own_name;
 mod short_circuit;
+mod void_result;
 
 /// What the hidden labels and temporaries of `pou`'s lowering start with: `_ST_`, but `_ST_INIT_`
 /// and `_ST_EXIT_` in a B&R program's `PROGRAM _INIT` and `_EXIT`, which ladderc joins with the
@@ -130,6 +131,9 @@ pub struct PouLowering<'d> {
     /// Set while a call statement's function call is lowered: its value is not used (a FUNCTION
     /// without result type may stand there, nowhere else: E0354).
     result_dropped: bool,
+    /// Set once a FUNCTION without result type assigning its own name has been reported
+    /// (`void_result`: one E0354 per function).
+    missing_result_reported: bool,
     /// A METHOD's `REFERENCE TO` variables (VAR, VAR_TEMP; upper-case) that start again at each
     /// call: `p REF= block.Pmin` into one is call-scoped (see `refs::REF_ASSIGN_CALL`), so it may
     /// refer to the method's VAR_IN_OUT, and sema keeps no reference through it (E0305).
@@ -286,6 +290,7 @@ impl<'d> PouLowering<'d> {
             constant_in_outs: Vec::new(),
             plain_in_outs: (String::new(), Vec::new()),
             result_dropped: false,
+            missing_result_reported: false,
             per_call_refs: Default::default(),
             per_call_target: false,
             literal_copies: Vec::new(),
@@ -1028,6 +1033,8 @@ impl<'d> PouLowering<'d> {
                     out.extend(code);
                 }
             }
+            StmtKind::Assign { target, value }
+                if self.assigns_missing_result(target, value, span, diags) => {}
             StmtKind::Assign { target, value } => {
                 self.poisoned = false;
                 let mut code = Vec::new();

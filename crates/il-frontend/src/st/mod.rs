@@ -1,7 +1,7 @@
 //! Structured Text (IEC 61131-3 ST), compiled through the IL syntax tree.
 //!
 //! A `.st` file in Siemens SCL is one E0023 before any stage (`scl`), so is an IL file in Siemens STL
-//! (`siemens_stl`).
+//! (`siemens_stl`); a ladder diagram drawn in text, read as IL or ST, is one E1091 (`text_ladder`).
 //! Stages: [`lexer`] (logos, case-insensitive keywords, the IL literal decoders) -> [`parser`]
 //! (recursive descent with IEC precedence and statement-level error recovery, codes E0100-E0139) ->
 //! [`ast`] -> [`lower`] (IL instructions with deferred operators, VAR_TEMP temporaries typed by
@@ -47,6 +47,7 @@ pub mod sfc;
 mod siemens_stl;
 mod stray_text;
 mod struct_extends;
+mod text_ladder;
 pub mod types;
 mod using;
 mod var_config;
