@@ -154,7 +154,7 @@ fn a_using_directive_is_one_warning_and_ignored() {
         "cycle,time_ms,main.n,main.q\n0,0,2,0\n1,10,4,0\n2,20,6,1\n"
     );
     assert!(
-        stderr.contains("main.st:1:1: warning[W1421]: `USING System.Timer`: ladderc has no namespaces; the directive is ignored"),
+        stderr.contains("main.st:1:1: warning[W1421]: `USING System.Timer`: no file of the project declares this namespace (a library's); the directive is ignored"),
         "{stderr}"
     );
     assert!(
@@ -284,7 +284,7 @@ fn a_task_declared_by_its_kind_is_one_e1048() {
     assert_eq!(
         heads,
         [
-            "configuration.st:1:1: warning[W1421]: `USING Siemens.Simatic.S71500.Tasks`: ladderc has no namespaces; the directive is ignored",
+            "configuration.st:1:1: warning[W1421]: `USING Siemens.Simatic.S71500.Tasks`: no file of the project declares this namespace (a library's); the directive is ignored",
             "configuration.st:4:26: error[E1048]: task `MyStartupTask` is declared by its kind `Startup`, not by a schedule",
             "configuration.st:5:31: error[E1048]: task `MyProgramCycleTask` is declared by its kind `ProgramCycle`, not by a schedule",
         ]

@@ -450,6 +450,7 @@ pub fn add_init_calls(
                 constant_in_outs: Vec::new(),
                 outputs: Vec::new(),
                 returns: false,
+                overloaded: false,
             });
     }
     let bodies: HashMap<String, Vec<Stmt>> = bodies.into_iter().collect();

@@ -2020,7 +2020,7 @@ fn parse_text_as_read(
                 )
                 .at(Span::new(file, r.start, r.end))
                 .with_primary_label("ignored")
-                .with_hint("ladderc compiles one project without namespaces: PUBLIC and INTERNAL change nothing in it; remove the word to silence this"),
+                .with_hint("PUBLIC and INTERNAL say whether a library's (or namespace's) user may reach the declaration; ladderc compiles the files given as one project, every declaration reachable, so the word changes nothing; remove it to silence this"),
             );
             blank(&mut text, r);
         }
@@ -2061,7 +2061,7 @@ fn parse_text_as_read(
             )
             .at(Span::new(file, r.start, r.end))
             .with_primary_label("ignored")
-            .with_hint("ladderc compiles one project without namespaces: the variables of a block are read as its VAR (reachable as `inst.x`, W1412); remove the word to silence this"),
+            .with_hint("outside a CLASS or FUNCTION_BLOCK an access specifier restricts nothing: the variables are read as the POU's VAR (reachable as `inst.x`, W1412); remove the word to silence this"),
         );
         blank(&mut text, r.clone());
     }
@@ -2099,7 +2099,7 @@ fn parse_text_as_read(
                     )
                     .at(Span::new(file, r.start, r.end))
                     .with_primary_label("ignored")
-                    .with_hint("ladderc compiles one project without namespaces: PUBLIC and INTERNAL change nothing in it; remove the word to silence this"),
+                    .with_hint("PUBLIC and INTERNAL say whether a library's (or namespace's) user may reach the declaration; ladderc compiles the files given as one project, every declaration reachable, so the word changes nothing; remove it to silence this"),
                 );
             }
             blank(&mut text, r.clone());

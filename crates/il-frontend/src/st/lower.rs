@@ -472,6 +472,10 @@ impl<'d> PouLowering<'d> {
                 (ArgDir::Output { .. }, None) => (None, &sig.outputs),
             };
             let Some(param) = param else {
+                // (a call of a dropped overload: its E1084 is the one error)
+                if sig.overloaded {
+                    continue;
+                }
                 let what = match &a.name {
                     Some(n) => format!("method `{}` has no parameter `{}`", sig.name, n.name),
                     None => format!("method `{}` takes {} input(s)", sig.name, sig.inputs.len()),

@@ -112,6 +112,10 @@ pub struct MethodSig {
     pub outputs: Vec<String>,
     /// Whether it returns a value (`METHOD M : INT`).
     pub returns: bool,
+    /// Whether its class declares more METHODs of its name (SIMATIC AX overloading, one E1084
+    /// at the second): a call that fits a dropped overload, not this one, reports nothing more
+    /// (round 31, before: one E1011 per such call).
+    pub overloaded: bool,
 }
 
 impl MethodSig {
@@ -136,6 +140,7 @@ impl MethodSig {
                 .collect(),
             outputs: names(&[crate::ast::VarKind::Output]),
             returns: m.ret.is_some(),
+            overloaded: m.overloaded,
         }
     }
 }

@@ -2,16 +2,18 @@
 //! SIMATIC AX, CODESYS and other ed. 3 workbenches write them) in `.st` text.
 //!
 //! Input: the file's text and tokens. Output: the text with each `USING` directive blanked, one
-//! W1421 note per directive, or `None` when there is none. ladderc compiles one project without
-//! namespaces: the directive brings nothing in, and a block, type or task kind that only the
-//! namespace declares is then reported where it is used (E1003, E1019 ...), naming it. Before, the
+//! W1421 note per directive naming a namespace no file of the project declares (a vendor library's;
+//! a namespace the project declares is read, `qualifiers`, and its directive blanked silently), or
+//! `None` when there is none. The directive brings nothing in, and a block, type or task kind that
+//! only the namespace declares is then reported where it is used (E1003, E1019 ...), naming it. Before, the
 //! directive made the file look like IL (W0001, E0007 for its `;`).
 //! Invariant: positions unchanged (the directive becomes blanks), so every span stays where the user
 //! wrote it.
 //!
 //! A task declared by its kind, `TASK Main : ProgramCycle;` (SIMATIC AX: the kind is a type of
 //! the `Siemens.Simatic.S71500.Tasks` namespace; also written with it,
-//! `TASK Main : Siemens.Simatic.S71500.Tasks.ProgramCycle;`), is one E1048 naming the kind ([`typed_tasks`]):
+//! `TASK Main : Siemens.Simatic.S71500.Tasks.ProgramCycle;`; with its parameters as an initial value,
+//! `TASK T : CyclicInterrupt := (CycleTime := T#500ms);`), is one E1048 naming the kind ([`typed_tasks`]):
 //! IEC 61131-3 declares a task by its schedule. The declaration and the `WITH Main` of the program
 //! instances it runs are blanked, so the instances are not reported again. A directive is `USING` + a name (dotted parts) [`, name` ...] + `;`, at the start of the
 //! text, after a `;` or after a POU header's name: `USING` names nothing else in ST.
@@ -97,7 +99,7 @@ pub(super) fn namespace_imports(
                 code::W1421,
                 Severity::Warning,
                 format!(
-                    "`USING {}`: ladderc has no namespaces; the directive is ignored",
+                    "`USING {}`: no file of the project declares this namespace (a library's); the directive is ignored",
                     names.join(", ")
                 ),
             )
@@ -162,7 +164,14 @@ pub(super) fn typed_tasks(
             continue;
         };
         let task = word(src, &toks[k + 1]);
-        let kind_range = toks[k + 3].range.start..toks[semi - 1].range.end;
+        // the kind's name alone (its dotted parts), not the parameters after it
+        let mut kind_end = k + 3;
+        while toks.get(kind_end + 1).is_some_and(|t| t.tok == Tok::Dot)
+            && toks.get(kind_end + 2).is_some_and(|t| t.tok == Tok::Ident)
+        {
+            kind_end += 2;
+        }
+        let kind_range = toks[k + 3].range.start..toks[kind_end].range.end;
         let kind = &src[kind_range.clone()];
         diags.push(
             Diagnostic::error(
@@ -198,13 +207,38 @@ pub(super) fn typed_tasks(
 
 /// The index of the `;` that ends the name `a.b.c` whose first part is `toks[first]`, or `None`
 /// when the parts are not followed by `;`. Each step moves past one `.` and one name: bounded by
-/// the tokens.
+/// the tokens. The kind may carry its parameters as an initial value, as SIMATIC AX writes a
+/// cyclic-interrupt task: `TASK T : CyclicInterrupt := (CycleTime := T#500ms, EventPriority :=
+/// USINT#13);` (round 31: before, a bare E0011 at the `:`); the parenthesised list is skipped
+/// to its matching `)`, one token a step.
 fn qualified_name_end(toks: &[Token], first: usize) -> Option<usize> {
     let mut j = first + 1;
     while toks.get(j).is_some_and(|t| t.tok == Tok::Dot)
         && toks.get(j + 1).is_some_and(|t| t.tok == Tok::Ident)
     {
         j += 2;
+    }
+    if toks.get(j).is_some_and(|t| t.tok == Tok::Assign)
+        && toks.get(j + 1).is_some_and(|t| t.tok == Tok::LParen)
+    {
+        let mut depth = 0usize;
+        let mut k = j + 1;
+        loop {
+            match toks.get(k).map(|t| &t.tok) {
+                Some(Tok::LParen) => depth += 1,
+                Some(Tok::RParen) => {
+                    depth = depth.saturating_sub(1);
+                    if depth == 0 {
+                        break;
+                    }
+                }
+                // (a `;` or the end inside the list: not a task declaration of this form)
+                Some(Tok::Semi) | None => return None,
+                Some(_) => {}
+            }
+            k += 1;
+        }
+        j = k + 1;
     }
     toks.get(j).is_some_and(|t| t.tok == Tok::Semi).then_some(j)
 }

@@ -491,6 +491,11 @@ impl PouLowering<'_> {
                         return;
                     }
                     let sig = self.methods[&name.key()].clone();
+                    // (a call of a dropped overload, `sig.overloaded`: its E1084 is the one error)
+                    if !sig.returns && sig.overloaded {
+                        e.kind = ExprKind::Error;
+                        return;
+                    }
                     if !sig.returns {
                         diags.push(
                             Diagnostic::error(
