@@ -136,6 +136,9 @@ enum Action {
         /// type's initial value; stored into `result` before EN is tested, so a box that does not
         /// run passes that value on (a function has no memory).
         initial: Option<Operand>,
+        /// A user function's ENO, stored by the call (`ENO => __eno_<localId>`) into this hidden
+        /// BOOL, FALSE when EN is FALSE: what the box's ENO pin carries.
+        eno: Option<Operand>,
         skip_label: String,
         span: Span,
     },
@@ -1612,10 +1615,12 @@ fn call(cond: Condition, inst: VarRef, args: Vec<(String, Operand)>, span: Span)
     )
 }
 
+/// `eno`: where a formal call stores the function's ENO (`ENO => eno`).
 fn emit_function(
     name: &Ident,
     form: &FuncForm,
     args: Vec<(Ident, Operand)>,
+    eno: Option<&Operand>,
     span: Span,
     out: &mut Vec<IlStmt>,
 ) {
@@ -1684,6 +1689,12 @@ fn emit_function(
                                 span: v.span(),
                                 value: v,
                             })
+                            .chain(eno.map(|e| FormalArg {
+                                name: Ident::new("ENO", span),
+                                dir: ArgDir::Output { negated: false },
+                                span,
+                                value: e.clone(),
+                            }))
                             .collect(),
                     )),
                 },

@@ -282,6 +282,7 @@ impl NetLowering<'_, '_> {
                     en,
                     result,
                     initial,
+                    eno,
                     skip_label,
                     span,
                 } => {
@@ -293,8 +294,13 @@ impl NetLowering<'_, '_> {
                         out.push(simple(Op::Ld, false, Some(init.clone()), *span));
                         out.push(simple(Op::St, false, Some(result.clone()), *span));
                     }
+                    if let (Some(e), Some(_)) = (eno, en) {
+                        // a call skipped by EN FALSE leaves ENO FALSE
+                        out.push(simple(Op::Ld, false, Some(bool_lit(false, *span)), *span));
+                        out.push(simple(Op::St, false, Some(e.clone()), *span));
+                    }
                     self.skip_unless_en(*en, skip_label, *span, out);
-                    emit_function(name, form, ops, *span, out);
+                    emit_function(name, form, ops, eno.as_ref(), *span, out);
                     out.push(simple(Op::St, false, Some(result.clone()), *span));
                     if en.is_some() {
                         out.push(IlStmt::Label(Ident::new(skip_label, *span)));
