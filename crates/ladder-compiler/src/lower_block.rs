@@ -265,7 +265,7 @@ impl NetLowering<'_, '_> {
                         return;
                     }
                 };
-                self.actions.push(Action::Fb {
+                self.push_action(Action::Fb {
                     inst: inst.clone(),
                     args: args.clone(),
                     en,
@@ -451,7 +451,7 @@ impl NetLowering<'_, '_> {
                     ),
                     None => eno,
                 };
-                self.actions.push(Action::Func {
+                self.push_action(Action::Func {
                     name: Ident::new(&**type_name, *type_span),
                     form,
                     args,
@@ -656,7 +656,7 @@ impl NetLowering<'_, '_> {
             },
             span,
         });
-        self.actions.push(Action::Execute {
+        self.push_action(Action::Execute {
             code: vec![call],
             en,
             skip_label: format!("__skip_{}", sanitize(&node.id)),
