@@ -5,15 +5,17 @@
 //! instances, temporaries), declared in one extra `VAR` block by the caller.
 //!
 //! Semantics, per network (the rules users expect of a PLC, which naive LD-to-ST converters break):
-//! 1. Phase 1 evaluates the network: blocks run in data-flow order (a block before anything that reads
-//!    its outputs; chained blocks in order), edge detectors are called, and every value used more than
-//!    once is stored in a temporary, so it is computed exactly once.
+//! every element is evaluated where it stands in the network's evaluation order (data flow, ties
+//! broken top to bottom, then left to right), as Beremiz generates it:
+//! 1. Phase 1 evaluates what comes before the first write: blocks in data-flow order (a block before
+//!    anything that reads its outputs; chained blocks in order), edge detectors, and every value used
+//!    more than once is stored in a temporary, so it is computed exactly once.
 //! 2. Phase 2 writes coils and output variables. Parallel coils fed by one power flow share a single
-//!    evaluation (`LD ...` then `ST a`, `ST b`). A contact reads its variable where it stands in the
-//!    evaluation order (data flow, then top to bottom, left to right): one before a coil of its
-//!    variable (a feedback, a seal-in) sees the value from before the coil, one after it (a lower
-//!    rung sharing a contact with the coil's) sees what the coil wrote, as Beremiz generates it
-//!    (child module `lower_reads`).
+//!    evaluation (`LD ...` then `ST a`, `ST b`). A contact reads its variable where it stands: one
+//!    before a coil of its variable (a feedback, a seal-in) sees the value from before the coil, one
+//!    after it (a lower rung sharing a contact with the coil's) sees what the coil wrote (child module
+//!    `lower_reads`); a block or edge contact placed after a coil runs after it (child module
+//!    `lower_emit`), so it too reads what the coil wrote, and an edge detector still runs once.
 //! 3. Jumps and returns come last, with the same capture rule.
 //!
 //! Feedback loops must pass through an in-out variable (it reads the previous value); other loops are
@@ -136,6 +138,9 @@ enum Action {
         /// type's initial value; stored into `result` before EN is tested, so a box that does not
         /// run passes that value on (a function has no memory).
         initial: Option<Operand>,
+        /// A user function's ENO, stored by the call (`ENO => __eno_<localId>`) into this hidden
+        /// BOOL, FALSE when EN is FALSE: what the box's ENO pin carries.
+        eno: Option<Operand>,
         skip_label: String,
         span: Span,
     },
@@ -662,6 +667,9 @@ struct NetLowering<'a, 'i> {
     built: HashSet<usize>,
     poisoned: HashSet<usize>,
     actions: Vec<Action>,
+    /// Per action: the place, in the network's evaluation order, of the element that made it (see
+    /// [`Self::pos`]); a box or edge detector placed after a write runs after it (`lower_emit`).
+    action_at: Vec<usize>,
     writes: Vec<Write>,
     controls: Vec<Control>,
     /// Temporaries used by this network, per type key.
@@ -707,6 +715,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             built: HashSet::default(),
             poisoned: HashSet::default(),
             actions: Vec::new(),
+            action_at: Vec::new(),
             writes: Vec::new(),
             controls: Vec::new(),
             used: HashMap::default(),
@@ -739,6 +748,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         self.built.clear();
         self.poisoned.clear();
         self.actions.clear();
+        self.action_at.clear();
         self.writes.clear();
         self.controls.clear();
         self.used.clear();
@@ -1195,7 +1205,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
 
     fn trig(&mut self, name: String, falling: bool, clk: ValId, span: Span) -> ValId {
         self.pou.declare_trig(&name, falling, span);
-        self.actions.push(Action::Trig {
+        self.push_action(Action::Trig {
             inst: name.clone(),
             clk,
             span,
@@ -1212,6 +1222,12 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             },
             span,
         )
+    }
+
+    /// Adds an action made by the element being built, at its place in the evaluation order.
+    fn push_action(&mut self, a: Action) {
+        self.actions.push(a);
+        self.action_at.push(self.cur_pos);
     }
 
     fn alloc_temp(&mut self, ty: &TypeRef) -> Operand {
@@ -1508,8 +1524,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 self.controls.push(Control::Return(v, span));
             }
             Kind::Label { label, label_span } => {
-                self.actions
-                    .push(Action::Label(Ident::new(&**label, *label_span)));
+                self.push_action(Action::Label(Ident::new(&**label, *label_span)));
             }
             Kind::Block { .. } => self.build_block(ctx, i),
         }
@@ -1612,10 +1627,12 @@ fn call(cond: Condition, inst: VarRef, args: Vec<(String, Operand)>, span: Span)
     )
 }
 
+/// `eno`: where a formal call stores the function's ENO (`ENO => eno`).
 fn emit_function(
     name: &Ident,
     form: &FuncForm,
     args: Vec<(Ident, Operand)>,
+    eno: Option<&Operand>,
     span: Span,
     out: &mut Vec<IlStmt>,
 ) {
@@ -1684,6 +1701,12 @@ fn emit_function(
                                 span: v.span(),
                                 value: v,
                             })
+                            .chain(eno.map(|e| FormalArg {
+                                name: Ident::new("ENO", span),
+                                dir: ArgDir::Output { negated: false },
+                                span,
+                                value: e.clone(),
+                            }))
                             .collect(),
                     )),
                 },

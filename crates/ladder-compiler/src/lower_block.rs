@@ -235,7 +235,7 @@ impl NetLowering<'_, '_> {
                 else {
                     return;
                 };
-                self.actions.push(Action::Fb {
+                self.push_action(Action::Fb {
                     inst: inst.clone(),
                     args: args.clone(),
                     en,
@@ -250,7 +250,21 @@ impl NetLowering<'_, '_> {
                 });
                 for out in outputs {
                     let key = out.name.to_ascii_uppercase();
-                    let v = if key == "ENO" {
+                    let v = if key == "ENO" && matches!(bt, BlockType::UserFb(_)) {
+                        // a user block's ENO pin is its instance's ENO after the call: FALSE
+                        // when EN is FALSE, else TRUE unless the body wrote `ENO := FALSE` (IEC
+                        // 61131-3 ed. 3 6.6.1.6, ed. 2 2.5.1.2: ENO is an output of the block;
+                        // matiec's FB bodies set ENO TRUE then run the body, and Beremiz reads
+                        // the pin as `inst.ENO`). Before round 31 it was EN
+                        // (`tests/tests/ld_r31_run.rs`)
+                        self.val(
+                            Val::Leaf {
+                                op: field_operand(&inst, "ENO", span),
+                                neg: false,
+                            },
+                            span,
+                        )
+                    } else if key == "ENO" {
                         eno
                     } else if let Some((_, v)) = args.iter().find(|(n, _)| n.is(&out.name)) {
                         // The output side of an in-out pin carries the connected variable.
@@ -382,13 +396,39 @@ impl NetLowering<'_, '_> {
                 } else {
                     (self.alloc_temp(&result_ty), None)
                 };
-                self.actions.push(Action::Func {
+                // A user function's ENO pin: the ENO its body leaves (TRUE unless it writes
+                // `ENO := FALSE`; FALSE when EN is FALSE), stored by the call as Beremiz generates
+                // it (`F42_OUT := F(EN := .., ENO => F42_ENO, ..)`); it also guards the writes of
+                // the result (see `NetLowering::en_results`). A standard function's ENO is its EN.
+                let eno_out = match bt {
+                    BlockType::UserFn(_)
+                        if en.is_some()
+                            || outputs.iter().any(|o| o.name.eq_ignore_ascii_case("ENO")) =>
+                    {
+                        let name = format!("__eno_{}", sanitize(&node.id));
+                        self.pou.declare_hidden(&name, bool_ty(span), span);
+                        Some(var_operand(&name, span))
+                    }
+                    _ => None,
+                };
+                let eno = match &eno_out {
+                    Some(op) => self.val(
+                        Val::Leaf {
+                            op: op.clone(),
+                            neg: false,
+                        },
+                        span,
+                    ),
+                    None => eno,
+                };
+                self.push_action(Action::Func {
                     name: Ident::new(&**type_name, *type_span),
                     form,
                     args,
                     en,
                     result: result.clone(),
                     initial,
+                    eno: eno_out,
                     skip_label: format!("__skip_{}", sanitize(&node.id)),
                     span,
                 });
@@ -586,7 +626,7 @@ impl NetLowering<'_, '_> {
             },
             span,
         });
-        self.actions.push(Action::Execute {
+        self.push_action(Action::Execute {
             code: vec![call],
             en,
             skip_label: format!("__skip_{}", sanitize(&node.id)),

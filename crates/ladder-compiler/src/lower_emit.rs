@@ -1,13 +1,23 @@
 //! Emission, for [`super`]: the values of one lowered network become IL statements: values used more
-//! than once stored in temporaries, phase 1 (blocks, edge detectors, shared values), phase 2 (coil and
-//! output writes sharing one evaluation, each contact read where it stands: `lower_reads`), then jumps
-//! and returns ([`NetLowering::emit`]).
+//! than once stored in temporaries, phase 1 (labels, the blocks and edge detectors placed before the
+//! first write, shared values), phase 2 (coil and output writes sharing one evaluation, each contact
+//! read where it stands: `lower_reads`; a block or edge detector placed after a write runs after it,
+//! before the next one), then jumps and returns ([`NetLowering::emit`]).
 //!
-//! Input: the network's value table and actions, built by [`super`]. Output: IL statements appended to
-//! the body. Invariants: every value is computed exactly once per network; every statement carries the
-//! span of the element it comes from.
+//! Input: the network's value table and actions (each with its place in the evaluation order),
+//! built by [`super`]. Output: IL statements appended to the body. Invariants: every value is
+//! computed exactly once per network; every action (block call, edge detector) is emitted exactly
+//! once, in evaluation order; every statement carries the span of the element it comes from.
 
 use super::*;
+
+/// One step of a network's writes (phase 2): a box or edge detector placed after the first write
+/// (index into the actions), or a write group.
+#[derive(Clone, Copy)]
+enum Step {
+    Act(usize),
+    Group(usize),
+}
 
 impl NetLowering<'_, '_> {
     pub(super) fn children(&self, v: ValId) -> Vec<ValId> {
@@ -57,8 +67,8 @@ impl NetLowering<'_, '_> {
         self.uses = uses;
     }
 
-    /// Consecutive writes of one value (and one guard: none, or the same) form a group: one
-    /// evaluation, several stores.
+    /// Consecutive writes of one value (and one guard: none, or the same) with no box or edge
+    /// detector placed between them form a group: one evaluation, several stores.
     pub(super) fn write_groups(&self) -> Vec<(std::ops::Range<usize>, ValId)> {
         let mut out: Vec<(std::ops::Range<usize>, ValId)> = Vec::new();
         for (i, w) in self.writes.iter().enumerate() {
@@ -66,7 +76,8 @@ impl NetLowering<'_, '_> {
                 Some((r, v))
                     if *v == w.val
                         && self.writes[r.start].guard.as_ref().map(|g| g.0)
-                            == w.guard.as_ref().map(|g| g.0) =>
+                            == w.guard.as_ref().map(|g| g.0)
+                        && !self.action_between(self.writes[r.end - 1].at, w.at) =>
                 {
                     r.end = i + 1
                 }
@@ -74,6 +85,15 @@ impl NetLowering<'_, '_> {
             }
         }
         out
+    }
+
+    /// Whether a box or edge detector (not a label) stands after place `from` and up to place `to`:
+    /// it runs between two writes there, so they are no one group.
+    fn action_between(&self, from: usize, to: usize) -> bool {
+        self.actions
+            .iter()
+            .zip(&self.action_at)
+            .any(|(a, &at)| !matches!(a, Action::Label(_)) && from < at && at <= to)
     }
 
     /// A value that can be used as an operand without evaluating anything.
@@ -229,104 +249,167 @@ impl NetLowering<'_, '_> {
         ));
     }
 
-    pub(super) fn emit(&mut self, out: &mut Vec<IlStmt>) {
-        self.count_uses();
-        let mut actions = std::mem::take(&mut self.actions);
-        // Phase 1: evaluate.
-        for a in &actions {
-            match a {
-                Action::Label(l) => out.push(IlStmt::Label(l.clone())),
-                Action::Trig { inst, clk, span } => {
-                    let clk_op = self.operand(*clk, out);
-                    let inst = VarRef {
-                        base: Ident::new(inst, *span),
-                        accessors: Default::default(),
-                        span: *span,
-                    };
-                    out.push(call(
-                        Condition::Always,
-                        inst,
-                        vec![("CLK".into(), clk_op)],
-                        *span,
-                    ));
-                }
-                Action::Fb {
+    /// Emits one action (a label, an edge detector, a block call) where it runs.
+    fn emit_action(&mut self, a: &Action, out: &mut Vec<IlStmt>) {
+        match a {
+            Action::Label(l) => out.push(IlStmt::Label(l.clone())),
+            Action::Trig { inst, clk, span } => {
+                let clk_op = self.operand(*clk, out);
+                let inst = VarRef {
+                    base: Ident::new(inst, *span),
+                    accessors: Default::default(),
+                    span: *span,
+                };
+                out.push(call(
+                    Condition::Always,
                     inst,
-                    args,
-                    en,
-                    en_arg,
-                    span,
-                } => {
-                    let mut ops = Vec::new();
-                    if let (Some(e), true) = (en, en_arg) {
-                        ops.push(("EN".to_string(), self.operand(*e, out)));
-                    }
-                    for (n, v) in args {
-                        ops.push((n.name.clone(), self.operand(*v, out)));
-                    }
-                    let cond = match en {
-                        Some(_) if *en_arg => Condition::Always,
-                        Some(e) => {
-                            self.prepare(*e, out);
-                            self.eval(*e, out);
-                            Condition::IfTrue
-                        }
-                        None => Condition::Always,
-                    };
-                    out.push(call(cond, inst.clone(), ops, *span));
+                    vec![("CLK".into(), clk_op)],
+                    *span,
+                ));
+            }
+            Action::Fb {
+                inst,
+                args,
+                en,
+                en_arg,
+                span,
+            } => {
+                let mut ops = Vec::new();
+                if let (Some(e), true) = (en, en_arg) {
+                    ops.push(("EN".to_string(), self.operand(*e, out)));
                 }
-                Action::Func {
-                    name,
-                    form,
-                    args,
-                    en,
-                    result,
-                    initial,
-                    skip_label,
-                    span,
-                } => {
-                    let mut ops = Vec::new();
-                    for (n, v) in args {
-                        ops.push((n.clone(), self.operand(*v, out)));
+                for (n, v) in args {
+                    ops.push((n.name.clone(), self.operand(*v, out)));
+                }
+                let cond = match en {
+                    Some(_) if *en_arg => Condition::Always,
+                    Some(e) => {
+                        self.prepare(*e, out);
+                        self.eval(*e, out);
+                        Condition::IfTrue
                     }
-                    if let Some(init) = initial {
-                        out.push(simple(Op::Ld, false, Some(init.clone()), *span));
-                        out.push(simple(Op::St, false, Some(result.clone()), *span));
-                    }
-                    self.skip_unless_en(*en, skip_label, *span, out);
-                    emit_function(name, form, ops, *span, out);
+                    None => Condition::Always,
+                };
+                out.push(call(cond, inst.clone(), ops, *span));
+            }
+            Action::Func {
+                name,
+                form,
+                args,
+                en,
+                result,
+                initial,
+                eno,
+                skip_label,
+                span,
+            } => {
+                let mut ops = Vec::new();
+                for (n, v) in args {
+                    ops.push((n.clone(), self.operand(*v, out)));
+                }
+                if let Some(init) = initial {
+                    out.push(simple(Op::Ld, false, Some(init.clone()), *span));
                     out.push(simple(Op::St, false, Some(result.clone()), *span));
-                    if en.is_some() {
-                        out.push(IlStmt::Label(Ident::new(skip_label, *span)));
-                    }
                 }
-                Action::Execute {
-                    code,
-                    en,
-                    skip_label,
-                    span,
-                } => {
-                    self.skip_unless_en(*en, skip_label, *span, out);
-                    out.extend(code.iter().cloned());
-                    if en.is_some() {
-                        out.push(IlStmt::Label(Ident::new(skip_label, *span)));
-                    }
+                if let (Some(e), Some(_)) = (eno, en) {
+                    // a call skipped by EN FALSE leaves ENO FALSE
+                    out.push(simple(Op::Ld, false, Some(bool_lit(false, *span)), *span));
+                    out.push(simple(Op::St, false, Some(e.clone()), *span));
+                }
+                self.skip_unless_en(*en, skip_label, *span, out);
+                emit_function(name, form, ops, eno.as_ref(), *span, out);
+                out.push(simple(Op::St, false, Some(result.clone()), *span));
+                if en.is_some() {
+                    out.push(IlStmt::Label(Ident::new(skip_label, *span)));
+                }
+            }
+            Action::Execute {
+                code,
+                en,
+                skip_label,
+                span,
+            } => {
+                self.skip_unless_en(*en, skip_label, *span, out);
+                out.extend(code.iter().cloned());
+                if en.is_some() {
+                    out.push(IlStmt::Label(Ident::new(skip_label, *span)));
                 }
             }
         }
-        // Shared values and captured writes are evaluated before the first write.
+    }
+
+    /// The values an action reads (its inputs, EN, an edge detector's CLK).
+    fn action_reads(a: &Action) -> Vec<ValId> {
+        match a {
+            Action::Trig { clk, .. } => vec![*clk],
+            Action::Fb { args, en, .. } | Action::Func { args, en, .. } => {
+                args.iter().map(|(_, v)| *v).chain(*en).collect()
+            }
+            Action::Execute { en, .. } => en.iter().copied().collect(),
+            Action::Label(_) => Vec::new(),
+        }
+    }
+
+    pub(super) fn emit(&mut self, out: &mut Vec<IlStmt>) {
+        self.count_uses();
         let groups = self.write_groups();
-        let mut finals: Vec<ValId> = groups.iter().map(|(_, v)| *v).collect();
+        let mut actions = std::mem::take(&mut self.actions);
+        // The evaluation order: labels, then the boxes and edge detectors placed before the
+        // network's first write (phase 1), then the writes, each box or edge detector placed after
+        // a write running after it, before the next write (an action placed where a write is, an
+        // edge coil's detector, runs before it), as Beremiz writes one statement per element in
+        // that order (`PLCGenerator.py`); jumps and returns last.
+        let first_write = groups.first().map(|(r, _)| self.writes[r.start].at);
+        let deferred: Vec<bool> = actions
+            .iter()
+            .zip(&self.action_at)
+            .map(|(a, &at)| !matches!(a, Action::Label(_)) && first_write.is_some_and(|q| at > q))
+            .collect();
+        let mut steps: Vec<Step> = Vec::with_capacity(groups.len());
+        let mut later = (0..actions.len()).filter(|&k| deferred[k]).peekable();
+        let first_deferred_at = later.peek().map(|&k| self.action_at[k]);
+        for (gi, (r, _)) in groups.iter().enumerate() {
+            let at = self.writes[r.start].at;
+            while let Some(k) = later.next_if(|&k| self.action_at[k] <= at) {
+                steps.push(Step::Act(k));
+            }
+            steps.push(Step::Group(gi));
+        }
+        steps.extend(later.map(Step::Act));
+        // Phase 1: labels, and the actions before the first write.
+        for (k, a) in actions.iter().enumerate() {
+            if !deferred[k] {
+                self.emit_action(a, out);
+            }
+        }
+        // Who reads what, at which step (jumps and returns after the last).
+        let mut action_reads: Vec<(ValId, usize)> = Vec::new();
+        let mut group_step = vec![0; groups.len()];
+        for (s, step) in steps.iter().enumerate() {
+            match *step {
+                Step::Group(gi) => group_step[gi] = s,
+                Step::Act(k) => {
+                    action_reads.extend(Self::action_reads(&actions[k]).iter().map(|&v| (v, s)))
+                }
+            }
+        }
+        let mut finals: Vec<(ValId, usize)> = groups
+            .iter()
+            .enumerate()
+            .map(|(gi, (_, v))| (*v, group_step[gi]))
+            .collect();
         for c in &self.controls {
             match c {
-                Control::Jump(_, v, _) | Control::Return(v, _) => finals.push(*v),
+                Control::Jump(_, v, _) | Control::Return(v, _) => finals.push((*v, steps.len())),
             }
         }
         // A contact reads its variable where it stands in the network (`lower_reads`): a value
         // that reads what an earlier group wrote is evaluated where it is written.
-        let times = self.read_times(&groups, &finals);
-        for (&v, &late) in finals.iter().zip(&times.late) {
-            if late {
+        let times = self.read_times(&groups, &group_step, &finals, &action_reads);
+        // Shared values and captured writes are evaluated before the first write, but for a value
+        // placed after a deferred action (it may read the action's outputs): evaluated at its step.
+        for (&(v, _), &late) in finals.iter().zip(&times.late) {
+            if late || first_deferred_at.is_some_and(|a| self.pos[v] >= a) {
                 continue;
             }
             self.prepare(v, out);
@@ -334,9 +417,17 @@ impl NetLowering<'_, '_> {
                 self.materialise(v, out);
             }
         }
-        // Phase 2: write.
-        for (gi, (r, v)) in groups.iter().enumerate() {
-            // a later group reads these contacts with the value before this write
+        // Phase 2: write, with the actions placed between the writes.
+        for step in &steps {
+            let gi = match *step {
+                Step::Act(k) => {
+                    self.emit_action(&actions[k], out);
+                    continue;
+                }
+                Step::Group(gi) => gi,
+            };
+            let (r, v) = &groups[gi];
+            // a later step reads these contacts with the value before this write
             if let Some(captures) = times.captures.get(gi) {
                 for &l in captures {
                     self.materialise(l, out);

@@ -12,13 +12,17 @@
 //! otherwise than the same rungs drawn with a contact each (two networks):
 //! `tests/tests/ld_r30_run.rs`.
 //!
+//! Round 31 put function and block boxes and edge contacts (P/N) in the same order: one placed after
+//! a coil runs after it (`lower_emit`), reading what the coil wrote (`tests/tests/ld_r31_run.rs`).
+//!
 //! Input: the network's values with [`NetLowering::pos`], its writes in order ([`Write::at`]) grouped
-//! by [`NetLowering::write_groups`], and its jumps and returns. Output: [`ReadTimes`]: for each
-//! group, the contacts to store in a temporary just before it writes (a later group reads them with
-//! the value before that write), and which written values are evaluated only where they are written
-//! (they read a variable an earlier group wrote). Invariants: walks each value once per group value
-//! (no recursion: an explicit stack), stops at values already stored; blocks and edge detectors are
-//! not concerned (they run in phase 1, before any write of the network).
+//! by [`NetLowering::write_groups`], each group at its step of phase 2 (boxes and edge detectors
+//! placed after the first write are steps too), its jumps and returns, and the inputs of those boxes
+//! and edge detectors with their steps. Output: [`ReadTimes`]: for each group, the contacts to store
+//! in a temporary just before it writes (a later step reads them with the value before that write),
+//! and which written values are evaluated only where they are written (they read a variable an
+//! earlier group wrote). Invariants: walks each value once per reader (no recursion: an explicit
+//! stack), stops at values already stored.
 
 use super::*;
 
@@ -26,7 +30,7 @@ use super::*;
 pub(super) struct ReadTimes {
     /// Per write group (then one slot for the jumps and returns): the contacts to capture before it.
     pub(super) captures: Vec<Vec<ValId>>,
-    /// Per final value (write groups, then jumps and returns): it reads what an earlier group wrote,
+    /// Per final value (write groups, then jumps and returns): it reads what an earlier step wrote,
     /// so it is evaluated where it is used, not before the first write.
     pub(super) late: Vec<bool>,
 }
@@ -58,46 +62,58 @@ impl NetLowering<'_, '_> {
         }
     }
 
-    /// `finals`: the values of the write groups `groups`, then those of the jumps and returns.
+    /// `groups`: the write groups, each emitted at step `group_step[gi]`; `finals`: the values of
+    /// the write groups, then those of the jumps and returns, each with the step where it is used
+    /// (jumps and returns after every step); `action_reads`: the inputs of the boxes and edge
+    /// detectors placed after the first write, each with its step.
     pub(super) fn read_times(
         &self,
         groups: &[(std::ops::Range<usize>, ValId)],
-        finals: &[ValId],
+        group_step: &[usize],
+        finals: &[(ValId, usize)],
+        action_reads: &[(ValId, usize)],
     ) -> ReadTimes {
         let mut times = ReadTimes {
             captures: vec![Vec::new(); groups.len() + 1],
             late: vec![false; finals.len()],
         };
-        // (group, place) of each write, per variable written
+        // (step, place) of each write, per variable written
         let mut written: HashMap<String, Vec<(usize, usize)>> = HashMap::default();
         for (gi, (r, _)) in groups.iter().enumerate() {
             for w in &self.writes[r.clone()] {
                 written
                     .entry(target_key(&w.target))
                     .or_default()
-                    .push((gi, w.at));
+                    .push((group_step[gi], w.at));
             }
         }
-        if groups.is_empty() || (groups.len() == 1 && finals.len() == 1) {
+        if groups.is_empty() || finals.len() + action_reads.len() <= 1 {
             // the usual one-coil rung: its own value is read before it writes
             return times;
         }
-        // the last final (group index; jumps and returns after every group) reading each leaf
+        // the last step reading each leaf
         let mut last_use: HashMap<ValId, usize> = HashMap::default();
-        for (fi, &v) in finals.iter().enumerate() {
+        let readers = finals
+            .iter()
+            .enumerate()
+            .map(|(fi, &(v, s))| (v, s, Some(fi)))
+            .chain(action_reads.iter().map(|&(v, s)| (v, s, None)));
+        for (v, step, fi) in readers {
             let mut seen = HashSet::default();
             let mut acc = Vec::new();
             self.leaves(v, &mut seen, &mut acc);
-            let user = fi.min(groups.len());
             for l in acc {
                 let Some(ws) = self.leaf_key(l).and_then(|k| written.get(&k)) else {
                     continue;
                 };
-                // a write placed before the contact, by an earlier group: read after it
-                if ws.iter().any(|&(g, at)| g < user && at < self.pos[l]) {
-                    times.late[fi] = true;
+                // a write placed before the contact, by an earlier step: read after it
+                if let Some(fi) = fi {
+                    if ws.iter().any(|&(s, at)| s < step && at < self.pos[l]) {
+                        times.late[fi] = true;
+                    }
                 }
-                last_use.insert(l, user);
+                let last = last_use.entry(l).or_insert(step);
+                *last = (*last).max(step);
             }
         }
         let mut captured: Vec<(usize, ValId)> = Vec::new();
@@ -105,15 +121,17 @@ impl NetLowering<'_, '_> {
             let Some(ws) = self.leaf_key(l).and_then(|k| written.get(&k)) else {
                 continue;
             };
-            // the first write placed after the contact: a group after it reads the value before it
-            if let Some(g) = ws
+            // the first write placed after the contact: a step after it reads the value before it
+            if let Some(s) = ws
                 .iter()
                 .filter(|&&(_, at)| at > self.pos[l])
-                .map(|&(g, _)| g)
+                .map(|&(s, _)| s)
                 .min()
             {
-                if g < user {
-                    captured.push((g, l));
+                if s < user {
+                    if let Ok(g) = group_step.binary_search(&s) {
+                        captured.push((g, l));
+                    }
                 }
             }
         }

@@ -187,7 +187,7 @@ impl NetLowering<'_, '_> {
             self.poisoned.insert(i);
             return;
         }
-        self.actions.push(Action::Execute {
+        self.push_action(Action::Execute {
             code,
             en,
             skip_label: format!("__skip_{}", sanitize(&node.id)),
