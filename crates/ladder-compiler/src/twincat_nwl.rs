@@ -35,7 +35,9 @@
 //! Infosys "Closed line branch": in the short-circuit mode the branches with boxes run only when
 //! no branch without one is TRUE); a set coil
 //! writes TRUE and a reset coil FALSE when powered; a jump skips the items up to the network of its
-//! label (forward only, as IEC 61131-3 8.2.7 draws it; a jump backwards is E0325).
+//! label (forward only, as IEC 61131-3 8.2.7 draws it; a jump backwards is E0325). A network shown
+//! as IL (`ILActive`: TwinCAT 3 keeps an IL body so, as a table of operator and operand rows) is
+//! not read: one E0325 naming the body as IL.
 //! Invariants: never panics; an element, call type or flag that is not understood is one E0325
 //! naming it and its network (1-based, as TwinCAT numbers them), at the element; an operand whose
 //! text is not one ST operand (a `;`, a comment, an assignment) is E0326 at it, so no markup text
@@ -188,12 +190,26 @@ impl Lowering {
             return Ok(());
         }
         if string(nw, "ILActive").as_deref() == Some("true") {
-            return Err(self.error_at(
-                code::E0325,
-                nw,
-                "the network is shown as IL (`ILActive`), which ladderc does not read in a network \
-                 list"
-                    .into(),
+            // TwinCAT 3 keeps an IL body as this network list: per network a table of rows
+            // (operator, prefix, operand, postfix), a call's arguments over several rows
+            // (`CAL T(` / `IN := x,` / `)`) and operands that may be ST expressions: not IEC IL
+            // text, and not read (README, TwinCAT row)
+            return Err(Box::new(
+                Diagnostic::error(
+                    code::E0325,
+                    format!(
+                        "TwinCAT IL body of `{}`, network {}: TwinCAT 3's IL (a network shown as IL, \
+                         `ILActive`, one table row per operator and operand) is not read by ladderc",
+                        self.what,
+                        k + 1
+                    ),
+                )
+                .at(Span::new(self.file, nw.tag_start(), nw.tag_end()))
+                .with_primary_label("an IL network")
+                .with_hint(
+                    "write the body in ST (or LD/FBD), which ladderc reads in a TwinCAT file; IL \
+                     is read in .il and .st files and in PLCopen XML",
+                ),
             ));
         }
         let Some(items) = prop(nw, "NetworkItems") else {

@@ -103,12 +103,7 @@ pub fn expand(
                         .extend(crate::user_libraries::references(&text));
                     let mut project_file = None;
                     for (path, include) in listed_files(&project, &text) {
-                        if session.file_exists(&path) || !session.disk {
-                            out.push(path);
-                            continue;
-                        }
-                        // written on Windows, whose names ignore case
-                        if let Some(found) = case_insensitive(&path) {
+                        if let Some(found) = listed_file_on_disk(session, &path) {
                             out.push(found);
                             continue;
                         }
@@ -267,6 +262,19 @@ fn compiler_defines(text: &str) -> Vec<(String, String)> {
         }
     }
     out
+}
+
+/// The file a project's `<Compile Include>` path `path` names: the path itself when it exists (or
+/// when the session reads no disk), else the one file it names when the case of its letters is
+/// ignored: TwinCAT runs on Windows, whose file names ignore case, so a file renamed in case only
+/// (Include `FB_LinkDataLWord.TcPOU`, file `FB_LinkDataLWORD.TcPOU`) is still the project's. The
+/// one rule for an application's project and a `--lib` library project alike; `None` when no file
+/// (or several) match.
+pub fn listed_file_on_disk(session: &Session, path: &Path) -> Option<PathBuf> {
+    if session.file_exists(path) || !session.disk {
+        return Some(path.to_path_buf());
+    }
+    case_insensitive(path)
 }
 
 /// The file `path` names when the case of its letters is ignored (the project's folder first, then

@@ -3,7 +3,8 @@
 //! (`<PlaceholderReference Include="Struckig">` with `<DefaultResolution>Struckig, * (...)` and
 //! `<Namespace>`, or `<LibraryReference Include="Struckig, 1.0 (...)">`); TwinCAT takes them from
 //! its installed library repository, which ladderc does not have. Each `--lib` names the library's
-//! own project (a `.plcproj`, or a folder holding one): its object files are read with the
+//! own project (a `.plcproj`, or a folder holding one): its object files (each `Include` matched
+//! regardless of case, by the rule of the application's project) are read with the
 //! application's, its POUs, types and global lists become available under the namespace the
 //! application's reference gives (`Struckig.Otg`), and unqualified too. The library's own
 //! references are resolved the same way among the `--lib` projects.
@@ -273,9 +274,10 @@ fn read_library(session: &Session, lib: &Path, diags: &mut Diagnostics) -> Optio
         }
     }
     let default_namespace = property("DefaultNamespace").unwrap_or(title.clone());
+    // an Include is matched as the application's are: regardless of case (Windows file names)
     let files = crate::twincat::listed_files(&project, &text)
         .into_iter()
-        .map(|(f, _)| f)
+        .map(|(f, _)| crate::twincat::listed_file_on_disk(session, &f).unwrap_or(f))
         .filter(|f| !crate::twincat::has_extension(f, "tctto"))
         .collect();
     Some(LibraryProject {

@@ -1679,19 +1679,19 @@ impl Body<'_, '_> {
                         .label("only BOOL outputs can be negated")
                         .hint(format!("write {pname} => var"));
                 }
-                if !super::typing::assignable(&pty, &target) {
-                    let (from, to) = (self.a.type_name(&pty), self.a.type_name(&target));
-                    self.a
-                        .error(
-                            code::E1012,
-                            s,
-                            format!(
-                                "output {pname} of {callee} is {from}, cannot be stored into {to}"
-                            ),
-                        )
-                        .label(format!("this is {to}"))
-                        .hint(conversion_hint(&from, &to));
-                }
+                // `inst(Q => v)` stores the output into `v` after the call (IEC 61131-3 ed. 3,
+                // 6.6.1.4.2, output assignment): the rule of the assignment `v := inst.Q`, with its
+                // dialect conversions (a WORD output into a UINT counts as UINT, W1436)
+                let (pn, cn) = (pname.clone(), callee.to_string());
+                self.coerce(&Ty::Known(pty.clone()), &target, s, |b, from, to| {
+                    b.a.error(
+                        code::E1012,
+                        s,
+                        format!("output {pn} of {cn} is {from}, cannot be stored into {to}"),
+                    )
+                    .label(format!("this is {to}"))
+                    .hint(conversion_hint(from, to));
+                });
                 rec.args.push((
                     ArgBinding {
                         param: pname,

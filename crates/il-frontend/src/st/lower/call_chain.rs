@@ -13,7 +13,8 @@
 //! structure or an interface result is copied into its temporary right after the call, so a second
 //! call of the same method later in the statement cannot change what the chain reads. A call that
 //! is no method (nor the block's own method) is one E0349 at the call, the statement dropped; when
-//! the instance's type is declared nowhere, that is the error instead (E1003 at its declaration).
+//! the instance's type (an array's element type too) is declared nowhere, that is the error
+//! instead (E1003 at its declaration).
 
 use super::super::ast::{Accessor, Arg, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind};
 use super::super::refs::REF_ASSIGN;
@@ -42,13 +43,21 @@ impl PouLowering<'_> {
     /// and no standard block has it (sema reports it E1003).
     fn undeclared_block_type(&self, callee: &Place) -> Option<Ident> {
         // (`uut.M()`, and deeper: `fbAlarm.ipArguments.Clear()` with `fbAlarm` of a library's
-        // block ladderc does not have)
-        let (PlaceBase::Name(n), [Accessor::Field(_), ..]) =
-            (&callee.base, callee.accessors.as_slice())
-        else {
+        // block ladderc does not have; `Alarm[i].ipArguments.Clear()` with `Alarm : ARRAY[1..5]
+        // OF FB_TcAlarm`: the element's type, through the indexes)
+        let PlaceBase::Name(n) = &callee.base else {
             return None;
         };
-        let TypeRef::Named(t) = self.env().var_type(n)? else {
+        let mut ty = self.env().var_type(n)?;
+        let mut rest = callee.accessors.as_slice();
+        while let [Accessor::Index(ix), tail @ ..] = rest {
+            match ty {
+                TypeRef::Array { dims, element, .. } if dims.len() == ix.len() => ty = *element,
+                _ => return None,
+            }
+            rest = tail;
+        }
+        let ([Accessor::Field(_), ..], TypeRef::Named(t)) = (rest, ty) else {
             return None;
         };
         let known = crate::sema::model::Elementary::from_name(&t.name.to_ascii_uppercase())

@@ -9,7 +9,9 @@
 //! it points into is known when the C is generated and the count can be bounded by it
 //! (`emit::memory` in the C backend), or as a `POINTER TO` / `REF_TO` variable (a field, an element)
 //! whose bounded reference carries the variable it was made from, bounding the count at run time;
-//! any other pointer (arithmetic, a call's result) is one E1035 at the argument; a wrong number of
+//! either one moved by a byte offset (`ADR(x) + n`, `p - n`, a chain `p + i - 1` read as
+//! `p + (i - 1)`); any other pointer (other arithmetic, a call's result) is one E1035 at the
+//! argument; a wrong number of
 //! arguments or an unknown parameter name is one E1035 at the call.
 
 use super::super::ast::{Arg, Expr, ExprKind};
@@ -159,6 +161,97 @@ impl PouLowering<'_> {
         }
     }
 
+    /// Whether `x` is an address a byte offset may move: `ADR(place)` / `REF(place)`, or a
+    /// pointer variable (or a name the lowering cannot type, such as an undeclared one: the
+    /// checks report it, E1001 or E1035 "is not a pointer").
+    fn is_address_term(&self, x: &Expr) -> bool {
+        match &x.kind {
+            ExprKind::Call { name, args } => {
+                super::super::refs::is_address_of(name)
+                    && matches!(
+                        &args[..],
+                        [Arg {
+                            name: None,
+                            value: Expr {
+                                kind: ExprKind::Place(_),
+                                ..
+                            },
+                            ..
+                        }]
+                    )
+            }
+            ExprKind::Place(p) => self.pointer_or_untyped(p),
+            _ => false,
+        }
+    }
+
+    /// A chain of three or more terms joined by + and - that holds one address term, added
+    /// (`p + i - 1`, `ADR(buf) + n - i`, `i + ADR(buf) - 1`), regrouped as `address + offset`
+    /// with the other terms in their order (`p + (i - 1)`): ST's + and - have one precedence and
+    /// are evaluated from the left (IEC 61131-3 ed. 2, 3.3.1, Table 55; ed. 3, Table 71), and
+    /// TwinCAT counts a pointer byte-wise (Beckhoff Infosys, TwinCAT PLC Control "Pointer": "A
+    /// pointer is counted byte-wise"; TE1200 SA0065), so the address moved on by `i` and back by
+    /// 1 is the address moved on by `i - 1` (an offset computed as UDINT, as in the written
+    /// `p + (i - 1)`). `None` for a
+    /// chain of two terms (read as written), for no or several address terms, an address
+    /// subtracted, or a first offset term subtracted (`ADR(x) - n + m`: before the address).
+    fn address_then_offset(&self, e: &Expr) -> Option<Expr> {
+        use super::super::ast::BinaryOp;
+        // the chain's terms, right to left along its left spine (iterative: no recursion)
+        let mut terms: Vec<(bool, &Expr)> = Vec::new();
+        let mut at = e;
+        while let ExprKind::Binary { op, left, right } = &at.kind {
+            match op {
+                BinaryOp::Add => terms.push((false, right)),
+                BinaryOp::Sub => terms.push((true, right)),
+                _ => break,
+            }
+            at = left;
+        }
+        terms.push((false, at));
+        terms.reverse();
+        if terms.len() < 3 {
+            return None;
+        }
+        let mut addresses = terms
+            .iter()
+            .enumerate()
+            .filter(|(_, (_, t))| self.is_address_term(t));
+        let (k, (minus, _)) = addresses.next()?;
+        if *minus || addresses.next().is_some() {
+            return None;
+        }
+        let address = terms[k].1.clone();
+        let mut rest = terms
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| *i != k)
+            .map(|(_, t)| *t);
+        let (first_minus, first) = rest.next()?;
+        if first_minus {
+            return None;
+        }
+        let offset = rest.fold(first.clone(), |acc, (minus, t)| {
+            let span = acc.span.to(t.span);
+            Expr {
+                kind: ExprKind::Binary {
+                    op: if minus { BinaryOp::Sub } else { BinaryOp::Add },
+                    left: Box::new(acc),
+                    right: Box::new(t.clone()),
+                },
+                span,
+            }
+        });
+        Some(Expr {
+            kind: ExprKind::Binary {
+                op: BinaryOp::Add,
+                left: Box::new(address),
+                right: Box::new(offset),
+            },
+            span: e.span,
+        })
+    }
+
     /// The variable a pointer argument points to: `ADR(x)` / `REF(x)` of a place (`false`), or a
     /// `POINTER TO` / `REF_TO` variable itself (`true`: its value is the address, bounded at run
     /// time); anything else is one E1035 (its object, so the bytes it may reach, cannot be known).
@@ -169,6 +262,11 @@ impl PouLowering<'_> {
         out: &mut Vec<il::IlStmt>,
         diags: &mut Diagnostics,
     ) -> Option<(il::VarRef, bool, Option<Operand>)> {
+        // `p + i - 1`, `ADR(buf) + n - i` (OC_Core's byte swap): + and - chain left to right,
+        // so the address moved on by `i` and back by 1 is the address moved on by `i - 1`
+        if let Some(regrouped) = self.address_then_offset(e) {
+            return self.pointed_variable(func, &regrouped, out, diags);
+        }
         // `p - n` of a pointer variable (a pointer to a text's end moved back over its last n
         // characters, RoddenLab's RIGHT of a big string): the moved pointer, held in a
         // temporary, is bounded as any pointer (moved before its variable: no room, the count
@@ -215,20 +313,9 @@ impl PouLowering<'_> {
             right,
         } = &e.kind
         {
-            let is_address = |x: &Expr| {
-                matches!(&x.kind, ExprKind::Call { name, args }
-                    if super::super::refs::is_address_of(name)
-                        && matches!(&args[..], [Arg { name: None, value: Expr { kind: ExprKind::Place(_), .. }, .. }]))
-            };
-            // (a pointer variable, or a name the lowering cannot type, such as an undeclared
-            // one: the checks report it, E1001 or E1035 "is not a pointer")
-            let is_pointer = |x: &Expr| match &x.kind {
-                ExprKind::Place(p) => self.pointer_or_untyped(p),
-                _ => false,
-            };
-            let (address, offset) = if is_address(left) || is_pointer(left) {
+            let (address, offset) = if self.is_address_term(left) {
                 (left, right)
-            } else if is_address(right) || is_pointer(right) {
+            } else if self.is_address_term(right) {
                 (right, left)
             } else {
                 (left, left)
