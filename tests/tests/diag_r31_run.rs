@@ -162,3 +162,190 @@ fn a_rung_drawn_in_a_comment_changes_nothing() {
     assert_eq!(code, Some(1), "{lines:?}");
     assert!(!lines.iter().any(|l| l.contains("E1091")), "{lines:?}");
 }
+
+/// A program whose first FBD network has a TON box without `instanceName` (fed by undeclared `a`)
+/// and whose second network reads undeclared `c`, next to a second program whose ST body reads
+/// undeclared `z`. The box's E3016 and the undeclared names are separate causes at separate
+/// places. Before: the E3016 alone (the checks did not run once reading the file had errors), the
+/// E1001 on the next run after the box was fixed; now the E3016 and one E1001 for `c` and one for
+/// `z` in one run, and nothing for the box's own wires (its `Q` feeds `q`: no follow-on error).
+#[test]
+fn names_undeclared_elsewhere_are_reported_with_a_box_without_instance_name() {
+    let src = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="t"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Pump" pouType="program">
+      <interface><localVars>
+        <variable name="q"><type><BOOL/></type></variable>
+        <variable name="r"><type><BOOL/></type></variable>
+      </localVars></interface>
+      <body><FBD>
+        <inVariable localId="1"><connectionPointOut/><expression>a</expression></inVariable>
+        <inVariable localId="2"><connectionPointOut/><expression>T#1s</expression></inVariable>
+        <block localId="3" typeName="TON"><inputVariables>
+          <variable formalParameter="IN"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+          <variable formalParameter="PT"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+        </inputVariables><inOutVariables/><outputVariables>
+          <variable formalParameter="Q"><connectionPointOut/></variable>
+        </outputVariables></block>
+        <outVariable localId="4"><connectionPointIn><connection refLocalId="3" formalParameter="Q"/></connectionPointIn><expression>q</expression></outVariable>
+        <inVariable localId="7"><connectionPointOut/><expression>c</expression></inVariable>
+        <outVariable localId="8"><connectionPointIn><connection refLocalId="7"/></connectionPointIn><expression>r</expression></outVariable>
+      </FBD></body>
+    </pou>
+    <pou name="Valve" pouType="program">
+      <interface><localVars>
+        <variable name="open"><type><BOOL/></type></variable>
+      </localVars></interface>
+      <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">open := z;</xhtml></ST></body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>
+"#;
+    let (code, lines) = check_text("pump.xml", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<_> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 3, "{lines:?}");
+    assert!(
+        errors
+            .iter()
+            .any(|e| e.starts_with("pump.xml:14:9: error[E3016]")
+                && e.contains("TON has no instance name")),
+        "{lines:?}"
+    );
+    assert!(
+        errors
+            .iter()
+            .any(|e| e.starts_with("pump.xml:21:66: error[E1001]") && e.contains("`c`")),
+        "{lines:?}"
+    );
+    assert!(
+        errors.iter().any(|e| e.starts_with("pump.xml:29:69:")
+            && e.contains("error[E1001]")
+            && e.contains("`z`")),
+        "{lines:?}"
+    );
+}
+
+/// A TON box whose `instanceName` `T1` the POU does not declare, and another network reading
+/// `T1.Q`: the missing declaration is one cause, one E3016 at the instance name; the read of
+/// `T1.Q` gets no E1001 of its own (the checks now run after an E3016, this test keeps them from
+/// repeating it), while undeclared `c` elsewhere is still reported.
+#[test]
+fn a_read_of_an_undeclared_box_instance_is_no_second_error() {
+    let src = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="t"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Pump" pouType="program">
+      <interface><localVars>
+        <variable name="go"><type><BOOL/></type></variable>
+        <variable name="q"><type><BOOL/></type></variable>
+        <variable name="r"><type><BOOL/></type></variable>
+      </localVars></interface>
+      <body><FBD>
+        <inVariable localId="1"><connectionPointOut/><expression>go</expression></inVariable>
+        <inVariable localId="2"><connectionPointOut/><expression>T#1s</expression></inVariable>
+        <block localId="3" typeName="TON" instanceName="T1"><inputVariables>
+          <variable formalParameter="IN"><connectionPointIn><connection refLocalId="1"/></connectionPointIn></variable>
+          <variable formalParameter="PT"><connectionPointIn><connection refLocalId="2"/></connectionPointIn></variable>
+        </inputVariables><inOutVariables/><outputVariables>
+          <variable formalParameter="Q"><connectionPointOut/></variable>
+        </outputVariables></block>
+        <inVariable localId="5"><connectionPointOut/><expression>T1.Q</expression></inVariable>
+        <outVariable localId="6"><connectionPointIn><connection refLocalId="5"/></connectionPointIn><expression>q</expression></outVariable>
+        <inVariable localId="7"><connectionPointOut/><expression>c</expression></inVariable>
+        <outVariable localId="8"><connectionPointIn><connection refLocalId="7"/></connectionPointIn><expression>r</expression></outVariable>
+      </FBD></body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>
+"#;
+    let (code, lines) = check_text("t1.xml", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<_> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 2, "{lines:?}");
+    assert!(
+        errors.iter().any(|e| e.starts_with("t1.xml:15:")
+            && e.contains("error[E3016]")
+            && e.contains("instance `T1` of TON is not declared")),
+        "{lines:?}"
+    );
+    assert!(
+        errors.iter().any(|e| e.starts_with("t1.xml:23:")
+            && e.contains("error[E1001]")
+            && e.contains("`c`")),
+        "{lines:?}"
+    );
+    assert!(
+        !lines
+            .iter()
+            .any(|l| l.contains("`T1`") && l.contains("E1001")),
+        "{lines:?}"
+    );
+}
+
+/// An AND box fed by undeclared `a` and by undeclared `b` through a negated input
+/// (`negated="true"`), `a` read again in a second network, and a second program reading
+/// undeclared `z`. Each undeclared name is one E1001 per POU: `a` and `b` at the box's inputs,
+/// `z` in the other program, and no second E1001 for `a` in the second network. Before: `a`
+/// alone (`b` under its NOT was not looked at, and the checks did not run after the box's error,
+/// so `z` came on the next run).
+#[test]
+fn undeclared_box_inputs_and_names_elsewhere_come_in_one_run_once_each() {
+    let src = r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201">
+  <fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+  <contentHeader name="t"><coordinateInfo><fbd><scaling x="1" y="1"/></fbd><ld><scaling x="1" y="1"/></ld><sfc><scaling x="1" y="1"/></sfc></coordinateInfo></contentHeader>
+  <types><dataTypes/><pous>
+    <pou name="Safety" pouType="program">
+      <interface><localVars>
+        <variable name="ok"><type><BOOL/></type></variable>
+        <variable name="r"><type><BOOL/></type></variable>
+      </localVars></interface>
+      <body><FBD>
+        <inVariable localId="10"><connectionPointOut/><expression>a</expression></inVariable>
+        <inVariable localId="11"><connectionPointOut/><expression>b</expression></inVariable>
+        <block localId="1" typeName="AND"><inputVariables>
+          <variable formalParameter="IN1"><connectionPointIn><connection refLocalId="10"/></connectionPointIn></variable>
+          <variable formalParameter="IN2" negated="true"><connectionPointIn><connection refLocalId="11"/></connectionPointIn></variable>
+        </inputVariables><inOutVariables/><outputVariables>
+          <variable formalParameter="OUT"><connectionPointOut/></variable>
+        </outputVariables></block>
+        <outVariable localId="12"><connectionPointIn><connection refLocalId="1" formalParameter="OUT"/></connectionPointIn><expression>ok</expression></outVariable>
+        <inVariable localId="20"><connectionPointOut/><expression>a</expression></inVariable>
+        <outVariable localId="21"><connectionPointIn><connection refLocalId="20"/></connectionPointIn><expression>r</expression></outVariable>
+      </FBD></body>
+    </pou>
+    <pou name="Valve" pouType="program">
+      <interface><localVars>
+        <variable name="open"><type><BOOL/></type></variable>
+      </localVars></interface>
+      <body><ST><xhtml xmlns="http://www.w3.org/1999/xhtml">open := z;</xhtml></ST></body>
+    </pou>
+  </pous></types>
+  <instances><configurations/></instances>
+</project>
+"#;
+    let (code, lines) = check_text("safety.xml", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<_> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 3, "{lines:?}");
+    for (at, name) in [
+        ("safety.xml:12:", "`a`"),
+        ("safety.xml:13:", "`b`"),
+        ("safety.xml:29:", "`z`"),
+    ] {
+        assert!(
+            errors
+                .iter()
+                .any(|e| e.starts_with(at) && e.contains("error[E1001]") && e.contains(name)),
+            "{at} {name}: {lines:?}"
+        );
+    }
+}

@@ -341,10 +341,15 @@ impl NetLowering<'_, '_> {
                     // inputs that are undeclared names: that is the error, not the type
                     let mut undeclared = false;
                     for (_, v) in &args {
+                        // a negated input (`negated="true"`) is the variable under its NOT
+                        let v = match &self.vals[*v] {
+                            Val::Not(inner) => *inner,
+                            _ => *v,
+                        };
                         if let Val::Leaf {
                             op: Operand::Var(r),
                             ..
-                        } = &self.vals[*v]
+                        } = &self.vals[v]
                         {
                             if self.pou.var_type(r).is_none() {
                                 undeclared = true;

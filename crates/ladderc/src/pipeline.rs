@@ -133,6 +133,9 @@ pub struct Session {
     /// The actions and METHODs read, and which were linked ([`il_frontend::actions::link`]): those
     /// nothing calls are checked on their own (`Session::check_uncalled`).
     pub linked_actions: il_frontend::actions::Linked,
+    /// How many diagnostics reading the files reported ([`Session::parse`]): those after them are
+    /// the checks' ([`Session::drop_behind_recovered_errors`]).
+    loaded_diags: usize,
 }
 
 /// What [`Session::parse`] produced: the user's units and what they are compiled with.
@@ -236,6 +239,7 @@ impl Session {
             codesys_files: Vec::new(),
             stub_types: Vec::new(),
             linked_actions: Default::default(),
+            loaded_diags: 0,
         }
     }
 
@@ -1180,25 +1184,86 @@ impl Session {
     /// Whether every error reported while reading the files is one whose cause the reader left
     /// behind it, so that the checks may run on the rest: E1032 (an unknown library qualifier,
     /// `Vendor.Connect()`: the qualified names renamed `__...`, which the checks do not report
-    /// again), E1085 (a generic POU, not compiled, its calls not reported again). Then the program's other, independent errors (an undeclared name, a missing global
-    /// list) are reported in the same run (before: the E1032 alone, the rest on the next run).
+    /// again), E1085 (a generic POU, not compiled, its calls not reported again), E3016 (a
+    /// graphical function block box without a declared instance: the box and what its outputs
+    /// feed are left out of the lowered network, the rest of the body is lowered) and E1001 in a
+    /// graphical body (an undeclared name at a box's input: the box is left out likewise). Then the
+    /// program's other, independent errors (an undeclared name, a missing global list) are
+    /// reported in the same run (before: the E1032 or the E3016 alone, the rest on the next run).
     fn only_recovered_parse_errors(&self) -> bool {
         self.diags
             .iter()
             .filter(|d| d.severity == diagnostics::Severity::Error)
-            .all(|d| d.code == code::E1032 || d.code == code::E1085)
+            .all(|d| {
+                d.code == code::E1032
+                    || d.code == code::E1085
+                    || d.code == code::E3016
+                    || (d.code == code::E1001 && d.xml.is_some())
+            })
     }
 
     /// The checks' errors at a name an E1032 reported, there or at another use of the same
     /// library (`Vendor.Connect()` read as `__ndor_Connect`, an unknown function; `DC_ECP.Dtm425`
     /// as an unknown type), and at a call of a generic POU that E1085 reported (`Pick(1, 2)`, an
-    /// unknown function): the unknown library or the generic POU is their one cause, reported once
-    /// (the checks run after these errors: [`Session::only_recovered_parse_errors`]).
+    /// unknown function), at a use of a box's instance that E3016 reported as not declared
+    /// (`T1.Q` read in another network of the same file, an undeclared name), and the checks'
+    /// E1001 of a name that reading a graphical body of the same POU already reported undeclared
+    /// (at a box's input): the unknown library, the generic POU, the missing instance or the
+    /// undeclared name is their one cause, reported once (the checks run after these errors:
+    /// [`Session::only_recovered_parse_errors`]).
     fn drop_behind_recovered_errors(&mut self) {
+        // (file, POU, upper-case name) of each E1001 reading the graphical bodies reported
+        let mut undeclared = std::collections::HashSet::new();
+        for d in self.diags.iter().take(self.loaded_diags) {
+            let (Some(s), Some(xml)) = (d.span, d.xml.as_ref()) else {
+                continue;
+            };
+            if d.code != code::E1001 {
+                continue;
+            }
+            if let Some(name) = d.message.split('`').nth(1) {
+                let pou = xml.pou.as_deref().unwrap_or("").to_ascii_uppercase();
+                undeclared.insert((s.file, pou, name.to_ascii_uppercase()));
+            }
+        }
+        if !undeclared.is_empty() {
+            let loaded = self.loaded_diags;
+            // the checks' diagnostics have no XML context yet: the POU their span is in
+            let mut locators = std::collections::HashMap::new();
+            let map = &self.map;
+            let mut kept = Diagnostics::new();
+            for (k, d) in std::mem::take(&mut self.diags).into_iter().enumerate() {
+                let again = k >= loaded
+                    && d.code == code::E1001
+                    && d.span.is_some_and(|s| {
+                        let Some(name) = d.message.split('`').nth(1) else {
+                            return false;
+                        };
+                        let pou = match d.xml.as_ref() {
+                            Some(x) => x.pou.clone(),
+                            None => locators
+                                .entry(s.file)
+                                .or_insert_with(|| {
+                                    ladder_compiler::locate::Locator::new(&map.get(s.file).text)
+                                })
+                                .at(s.start as usize)
+                                .and_then(|x| x.pou.clone()),
+                        };
+                        let pou = pou.unwrap_or_default().to_ascii_uppercase();
+                        undeclared.contains(&(s.file, pou, name.to_ascii_uppercase()))
+                    });
+                if !again {
+                    kept.push(d);
+                }
+            }
+            self.diags = kept;
+        }
         // (upper case) each library E1032 named: the text at its span; each generic POU E1085
-        // named: the text at its span up to the `<`
+        // named: the text at its span up to the `<`; each undeclared instance E3016 named (its
+        // span is the `instanceName`), with its file
         let mut libraries = std::collections::HashSet::new();
         let mut generic = std::collections::HashSet::new();
+        let mut instances = std::collections::HashSet::new();
         for d in self.diags.iter() {
             let Some(s) = d.span else { continue };
             let text = &self.map.get(s.file).text;
@@ -1210,9 +1275,11 @@ impl Session {
             } else if d.code == code::E1085 {
                 let name = at.split('<').next().unwrap_or(at).trim();
                 generic.insert(name.to_ascii_uppercase());
+            } else if d.code == code::E3016 && d.message.starts_with("instance `") {
+                instances.insert((s.file, at.trim().to_ascii_uppercase()));
             }
         }
-        if libraries.is_empty() && generic.is_empty() {
+        if libraries.is_empty() && generic.is_empty() && instances.is_empty() {
             return;
         }
         let map = &self.map;
@@ -1225,11 +1292,13 @@ impl Session {
             let name = at[..name_len].to_ascii_uppercase();
             (at[name_len..].starts_with('.') && libraries.contains(&name))
                 || generic.contains(&name)
+                || instances.contains(&(s.file, name))
         };
         let mut kept = Diagnostics::new();
         for d in std::mem::take(&mut self.diags) {
             if d.code == code::E1032
                 || d.code == code::E1085
+                || d.code == code::E3016
                 || d.severity != diagnostics::Severity::Error
                 || !d.span.is_some_and(behind)
             {
@@ -1261,6 +1330,7 @@ impl Session {
         }
         self.libraries = opts.libraries.clone();
         let units = self.load_as(paths, opts.lang);
+        self.loaded_diags = self.diags.len();
         if self.diags.has_errors() && !self.only_recovered_parse_errors() {
             self.unknown_types_behind_bounds(&units, &library);
             return None;
