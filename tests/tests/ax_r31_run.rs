@@ -11,7 +11,11 @@
 //! - W1421 and W0304 no longer say ladderc has no namespaces (it reads the project's namespaces,
 //!   README "Namespaces");
 //! - after E1084 (two METHODs of one name, SIMATIC AX overloading), a call that fits the dropped
-//!   overload reports nothing more (before: one E1011 per call).
+//!   overload reports nothing more (before: one E1011 per call);
+//! - a derived class's METHOD that overrides a base method with another signature (SIMATIC AX
+//!   overloading across inheritance; IEC 61131-3 ed. 3, 6.6.5.5: an override keeps the signature)
+//!   is one E1084 at the derived method, the base's kept (before: accepted silently), and a
+//!   `THIS.Init(a)` meant for the base's overload is no E0106 "calls itself".
 
 mod common;
 use common::{check_text, column, run_text};
@@ -229,4 +233,145 @@ END_PROGRAM
         lines[0].contains("overloads.st:6:22") && lines[0].contains("E1084"),
         "{lines:?}"
     );
+}
+
+/// A derived class's `Init(a, b)` over the base's `Init(a)` (SIMATIC AX reads it as an overload;
+/// IEC 61131-3 ed. 3, 6.6.5.5: an overriding method keeps the signature of the one it
+/// overrides): one E1084 at the derived METHOD's name (21:17) naming `Base.Init`, the base's
+/// kept; the program's call with `b`, which fits the dropped one, reports nothing more. Before:
+/// exit 0 and no diagnostic, the derived method silently replacing the base's.
+#[test]
+fn an_override_with_another_signature_is_e1084() {
+    let src = "CLASS Base
+    VAR PUBLIC id : INT; END_VAR
+    METHOD PROTECTED Init
+        VAR_INPUT a : INT; END_VAR
+        id := a;
+    END_METHOD
+END_CLASS
+
+CLASS Derived EXTENDS Base
+    VAR PUBLIC extra : INT; END_VAR
+    METHOD PUBLIC Report : INT
+        Report := id;
+    END_METHOD
+END_CLASS
+
+CLASS Wider EXTENDS Derived
+    VAR PUBLIC more : INT; END_VAR
+    (* the base's Init with another input: an overload in SIMATIC AX *)
+
+    METHOD PUBLIC Init
+        VAR_INPUT a : INT; b : INT := 7; END_VAR
+        more := b;
+    END_METHOD
+END_CLASS
+
+PROGRAM Main
+    VAR w : Wider; r : INT; END_VAR
+    w.Init(a := 3, b := 4);
+    r := w.Report();
+END_PROGRAM
+";
+    let (code, lines) = check_text("override_sig.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    let l = &lines[0];
+    assert!(
+        l.contains("override_sig.st:20:19") && l.contains("E1084"),
+        "{lines:?}"
+    );
+    assert!(
+        l.contains("`Init` of `Wider`") && l.contains("`Base.Init`") && l.contains("signature"),
+        "{lines:?}"
+    );
+}
+
+/// SIMATIC AX's constructor pattern: the derived `Init(a, b)` calls the base's overload with
+/// `THIS.Init(a)` (ae-simplified-sorting-machine, `THIS.CONSTRUCTOR(stationID, stationPosLeft)`).
+/// With the base's `Init` kept (E1084 at the derived one, 11:19), that call fits it and reports
+/// nothing more. Before: no E1084, and E0106 "method `Init` calls itself" at `THIS.Init(a)` with
+/// advice about an explicit stack, though nothing recurses.
+#[test]
+fn a_call_of_the_base_overload_is_no_recursion() {
+    let src = "CLASS Base
+    VAR PUBLIC id : INT; END_VAR
+    METHOD PROTECTED Init
+        VAR_INPUT a : INT; END_VAR
+        id := a;
+    END_METHOD
+END_CLASS
+
+CLASS Derived EXTENDS Base
+    VAR PUBLIC extra : INT; END_VAR
+    METHOD PUBLIC Init
+        VAR_INPUT a : INT; b : INT := 7; END_VAR
+        THIS.Init(a);
+        extra := b;
+    END_METHOD
+END_CLASS
+
+PROGRAM Main
+    VAR d : Derived; END_VAR
+    d.Init(a := 3, b := 4);
+END_PROGRAM
+";
+    let (code, lines) = check_text("overload_call.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].contains("overload_call.st:11:19")
+            && lines[0].contains("E1084")
+            && lines[0].contains("`Base.Init`"),
+        "{lines:?}"
+    );
+    assert!(!lines.iter().any(|l| l.contains("E0106")), "{lines:?}");
+}
+
+/// What stays as it was: an override with the base's signature runs late-bound (the base's
+/// `Run` calls `Step`, the derived `Step` runs: n = 10 then 20), and a derived method of the name
+/// of a base's PRIVATE method, with other inputs, is no override (IEC 61131-3 ed. 3, 6.6.5: a
+/// private method is invisible to the derived class) and runs (k = 5).
+#[test]
+fn same_signature_overrides_and_private_names_still_run() {
+    let src = "CLASS Base
+    VAR PUBLIC n : INT; k : INT; END_VAR
+    METHOD PUBLIC Step
+        VAR_INPUT inc : INT; END_VAR
+        n := n + inc;
+    END_METHOD
+    METHOD PUBLIC Run
+        Step(inc := 1);
+    END_METHOD
+    METHOD PRIVATE Helper
+        k := 1;
+    END_METHOD
+END_CLASS
+
+CLASS Derived EXTENDS Base
+    METHOD PUBLIC Step
+        VAR_INPUT inc : INT; END_VAR
+        n := n + 10 * inc;
+    END_METHOD
+    METHOD PUBLIC Helper
+        VAR_INPUT v : INT; END_VAR
+        k := v;
+    END_METHOD
+END_CLASS
+
+PROGRAM Main
+    VAR d : Derived; n : INT; k : INT; END_VAR
+    d.Run();
+    d.Helper(v := 5);
+    n := d.n;
+    k := d.k;
+END_PROGRAM
+";
+    let (trace, stderr) = run_text("overrides.st", src, 2, "Main.n,Main.k");
+    assert_eq!(
+        column(&trace, "Main.n"),
+        vec![10.0, 20.0],
+        "{trace}{stderr}"
+    );
+    assert_eq!(column(&trace, "Main.k"), vec![5.0, 5.0], "{trace}{stderr}");
 }

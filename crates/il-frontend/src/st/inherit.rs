@@ -4,7 +4,9 @@
 //! Input: the pending ST bodies of every file (their [`Oop`] read by [`super::file::parse_text`]) and
 //! the parsed units (the blocks' own declarations). Output: the pending bodies to lower, where a
 //! derived block is flattened: its variables are its bases' (root first, every section) then its own;
-//! its methods and actions are its bases' unless it declares one of the same name; its body is its
+//! its methods and actions are its bases' unless it declares one of the same name (a method with
+//! another signature than the base's it would override is E1084 and dropped, the base's kept:
+//! `super::override_signature`); its body is its
 //! own (the derived block's body replaces the base's, which runs only where `SUPER^()` calls it, as
 //! CODESYS and Beckhoff document `SUPER`). `SUPER^.M()` in a text of level `j` of the chain calls the
 //! version of `M` visible at level `j - 1` (a hidden method `__S<level>_M`), `SUPER^()` the body of
@@ -13,7 +15,7 @@
 //! instance's own type, without pointers, since each derived block has its own copy.
 //! Invariants: every chain is finite (a cycle is E0331, never followed); texts are rewritten in place
 //! with the same length and line breaks, so every span of inherited code is a position in its file;
-//! each problem is one located diagnostic (E0330-E0336).
+//! each problem is one located diagnostic (E0330-E0336, E1084).
 
 use super::file::{PendingBody, PendingMethod, PouText};
 use super::lexer::{lex, Tok};
@@ -849,6 +851,10 @@ fn flatten_one(
             }
         }
     }
+    // a derived version with another signature than the one it overrides: E1084, the base's
+    // kept (SIMATIC AX's overloading across inheritance, `super::override_signature`)
+    let names: Vec<&Ident> = levels.iter().map(|c| &c.name).collect();
+    let overloaded = super::override_signature::keep_base_signatures(&mut versions, &names, diags);
     let mut ctx = Rewrite {
         levels: &levels,
         versions: &versions,
@@ -861,6 +867,10 @@ fn flatten_one(
             continue;
         };
         let mut m = m.clone();
+        if let Some(access) = overloaded.get(key) {
+            m.overloaded = true;
+            m.access = access.clone();
+        }
         private_calls(file, &m.text, m.base, j, &ctx, diags);
         m.text = ctx.rewrite(file, &m.text, m.base, j, diags);
         methods.push(m);
@@ -1147,7 +1157,7 @@ fn type_key(t: &TypeRef) -> String {
 }
 
 /// A method's signature as a text: result type, then each input and output with its type.
-fn signature(m: &PendingMethod) -> String {
+pub(super) fn signature(m: &PendingMethod) -> String {
     let mut s = m.ret.as_ref().map_or("-".to_string(), |r| type_key(&r.ty));
     for kind in [VarKind::Input, VarKind::Output, VarKind::InOut] {
         for b in m.blocks.iter().filter(|b| b.kind == kind) {
@@ -1162,7 +1172,7 @@ fn signature(m: &PendingMethod) -> String {
 /// A method's signature for a message: `M(a : INT, VAR_OUTPUT q : BOOL) : BOOL`; a variable-length in-out as written
 /// (`a : ARRAY[*] OF LREAL`), not as its hidden inputs (`varlen`), and an ANY input likewise
 /// (`In : ANY_NUM`, not `any_inputs`' hidden inputs).
-fn shown(m: &PendingMethod) -> String {
+pub(super) fn shown(m: &PendingMethod) -> String {
     let mut ins: Vec<String> = Vec::new();
     for v in m
         .blocks

@@ -37,6 +37,7 @@ mod list_bounds;
 pub mod lone_members;
 pub mod lower;
 mod method_inits;
+mod override_signature;
 pub mod parser;
 mod pou_inits;
 pub mod property;
