@@ -8,7 +8,10 @@
 //!   8.3.2, ed. 2 2.6.2: `step.X`, `step.T`; Beckhoff Infosys "Implicit variables" and CODESYS
 //!   "Implicit Variables": `<stepname>.x`, `<stepname>.t`); before: E1001 "undeclared name";
 //! - an initial value read from another variable in a POU whose body is a chart is computed at
-//!   run time with W1433, as in an ST POU (README "Source text details"); before: E1025.
+//!   run time with W1433, as in an ST POU (README "Source text details"); before: E1025;
+//! - `SUPER^()` in a block derived from a block whose body is a chart (textual or TwinCAT) runs one
+//!   scan of the base's chart in the derived instance (Beckhoff infosys "SUPER"), found in
+//!   x-PPU_PLC-Reconfiguration's control primitives; before: E0303.
 //!
 //! The TwinCAT files are written here, archive object by archive object (the attribute GUIDs are
 //! the ones `ladder_compiler::twincat_sfc` documents).
