@@ -8,7 +8,10 @@
 //!   8.3.2, ed. 2 2.6.2: `step.X`, `step.T`; Beckhoff Infosys "Implicit variables" and CODESYS
 //!   "Implicit Variables": `<stepname>.x`, `<stepname>.t`); before: E1001 "undeclared name";
 //! - an initial value read from another variable in a POU whose body is a chart is computed at
-//!   run time with W1433, as in an ST POU (README "Source text details"); before: E1025.
+//!   run time with W1433, as in an ST POU (README "Source text details"); before: E1025;
+//! - `SUPER^()` in a block derived from a block whose body is a chart (textual or TwinCAT) runs one
+//!   scan of the base's chart in the derived instance (Beckhoff infosys "SUPER"), found in
+//!   x-PPU_PLC-Reconfiguration's control primitives; before: E0303.
 //!
 //! The TwinCAT files are written here, archive object by archive object (the attribute GUIDs are
 //! the ones `ladder_compiler::twincat_sfc` documents).
@@ -311,4 +314,174 @@ fn an_initial_value_read_from_another_variable_in_a_chart_s_block_is_computed_at
             "{name}"
         );
     }
+}
+
+/// A block whose body is a three-step chart (`Idle` -> `Run` -> `Done` -> `Idle`, each transition
+/// on `go`; `Run` counts its scans in `n` by an N action) and two blocks derived from it.
+const BASE_CHART: &str = "FUNCTION_BLOCK Base
+VAR_INPUT
+    go : BOOL;
+END_VAR
+VAR_OUTPUT
+    n : INT;
+END_VAR
+INITIAL_STEP Idle:
+END_STEP
+TRANSITION FROM Idle TO Run := go;
+END_TRANSITION
+STEP Run:
+    Count(N);
+END_STEP
+TRANSITION FROM Run TO Done := go;
+END_TRANSITION
+STEP Done:
+END_STEP
+TRANSITION FROM Done TO Idle := go;
+END_TRANSITION
+ACTION Count:
+    n := n + 1;
+END_ACTION
+END_FUNCTION_BLOCK
+";
+
+/// `SUPER^()` in a block derived from a block whose body is a chart runs one scan of the base's
+/// chart, its steps kept in the derived block's instance, and the derived block's body then
+/// reads the steps' flags (`Idle.X`); a derived block that never calls `SUPER^()` runs no chart
+/// (its `n` stays 0). Beckhoff infosys "SUPER": `SUPER^()` calls the body of the base's
+/// function block; CODESYS online help "SUPER" says the same. Checked scan by scan: `go` TRUE
+/// for one scan moves the chart one step on. Before round 31: E0303 "SUPER^() runs the body of
+/// `Base`, which is SFC: not supported" (x-PPU_PLC-Reconfiguration's control primitives).
+#[test]
+fn super_call_of_a_base_whose_body_is_a_chart_runs_one_scan_of_it() {
+    let src = format!(
+        "{BASE_CHART}
+FUNCTION_BLOCK Derived EXTENDS Base
+VAR_OUTPUT
+    idleX, runX, doneX : BOOL;
+END_VAR
+SUPER^();
+idleX := Idle.X;
+runX := Run.X;
+doneX := Done.X;
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK Plain EXTENDS Base
+VAR_OUTPUT
+    m : INT;
+END_VAR
+m := m + 1;
+END_FUNCTION_BLOCK
+
+PROGRAM Main
+VAR
+    d : Derived;
+    p : Plain;
+    go : BOOL;
+    i, r, dn : BOOL;
+    cnt, pn, pm : INT;
+END_VAR
+d(go := go);
+i := d.idleX; r := d.runX; dn := d.doneX; cnt := d.n;
+p(go := go);
+pn := p.n; pm := p.m;
+END_PROGRAM
+"
+    );
+    let (trace, stderr) = run_file(
+        "super_chart.st",
+        &src,
+        9,
+        "1,Main.go,TRUE\n2,Main.go,FALSE\n4,Main.go,TRUE\n5,Main.go,FALSE\n6,Main.go,TRUE\n7,Main.go,FALSE\n",
+        "Main.go,Main.i,Main.r,Main.dn,Main.cnt,Main.pn,Main.pm",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    // go, Idle.X, Run.X, Done.X, the base's count (N action of Run, one last scan as it is left),
+    // the plain block's count (no chart: 0) and its own body's count
+    assert_eq!(
+        rows(&trace),
+        [
+            "0,1,0,0,0,0,1",
+            "1,0,1,0,1,0,2",
+            "0,0,1,0,2,0,3",
+            "0,0,1,0,3,0,4",
+            "1,0,0,1,4,0,5",
+            "0,0,0,1,4,0,6",
+            "1,1,0,0,4,0,7",
+            "0,1,0,0,4,0,8",
+            "0,1,0,0,4,0,9",
+        ],
+        "{trace}"
+    );
+}
+
+/// A `.TcPOU` of declaration `decl` and ST body `body`.
+fn tc_st_pou(name: &str, decl: &str, body: &str) -> String {
+    format!(
+        "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n\
+         <TcPlcObject Version=\"1.1.0.1\" ProductVersion=\"3.1.4024.12\">\n\
+         <POU Name=\"{name}\" Id=\"{{00000000-0000-0000-0000-000000000003}}\" SpecialFunc=\"None\">\n\
+         <Declaration><![CDATA[{decl}]]></Declaration>\n<Implementation>\n<ST><![CDATA[{body}]]></ST>\n\
+         </Implementation>\n</POU>\n</TcPlcObject>\n"
+    )
+}
+
+/// The TwinCAT form of x-PPU_PLC-Reconfiguration's control primitives: a base block whose body
+/// is a TwinCAT chart (`.TcPOU` `<SFC>`, three steps advanced by `bGo`, `S1` counting its scans
+/// by the action `aCount`) and a derived block (ST) whose body is `SUPER^();` then reads the step
+/// flags. One scan of the chart per call, scan by scan. Before round 31: E0303 "SUPER^() runs
+/// the body of `FB_Base`, which is SFC: not supported", 15 of them in x-PPU.
+#[test]
+fn super_call_of_a_twincat_chart_base_runs_one_scan_of_it() {
+    let base = tc_pou(
+        "FB_Base",
+        "FUNCTION_BLOCK FB_Base\nVAR_INPUT\n\tbGo : BOOL;\nEND_VAR\nVAR_OUTPUT\n\tnCount : INT;\nEND_VAR\n",
+        &[
+            step("S0", true, "", &[]),
+            transition("bGo"),
+            step("S1", false, "", &[("aCount", "N")]),
+            transition("bGo"),
+            step("S2", false, "", &[]),
+            transition("bGo"),
+            jump("S0"),
+        ],
+        &[("aCount", "nCount := nCount + 1;")],
+    );
+    let derived = tc_st_pou(
+        "FB_Derived",
+        "FUNCTION_BLOCK FB_Derived EXTENDS FB_Base\nVAR_OUTPUT\n\tb0, b1, b2 : BOOL;\nEND_VAR\n",
+        "SUPER^();\nb0 := S0.X;\nb1 := S1.X;\nb2 := S2.X;\n",
+    );
+    let main = tc_st_pou(
+        "MAIN",
+        "PROGRAM MAIN\nVAR\n\tfb : FB_Derived;\n\tgo, x0, x1, x2 : BOOL;\n\tn : INT;\nEND_VAR\n",
+        "fb(bGo := go);\nx0 := fb.b0;\nx1 := fb.b1;\nx2 := fb.b2;\nn := fb.nCount;\n",
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let files: Vec<std::path::PathBuf> = [
+        ("FB_Base.TcPOU", &base),
+        ("FB_Derived.TcPOU", &derived),
+        ("MAIN.TcPOU", &main),
+    ]
+    .iter()
+    .map(|(n, src)| {
+        let p = dir.path().join(n);
+        std::fs::write(&p, src).unwrap();
+        p
+    })
+    .collect();
+    let (trace, stderr) = common::run_stimulated_files(
+        &files,
+        &["--cycle-ms", "10"],
+        6,
+        "1,MAIN.go,TRUE\n2,MAIN.go,FALSE\n3,MAIN.go,TRUE\n4,MAIN.go,TRUE\n",
+        "MAIN.x0,MAIN.x1,MAIN.x2,MAIN.n",
+    );
+    assert!(!stderr.contains("error"), "{stderr}");
+    assert_eq!(
+        rows(&trace),
+        // S0, S1, S2 active, the scans counted by S1's N action (one last scan as S1 is left);
+        // `go` stays TRUE from scan 3: one step per scan
+        ["1,0,0,0", "0,1,0,1", "0,1,0,2", "0,0,1,3", "1,0,0,3", "0,1,0,4"],
+        "{trace}"
+    );
 }

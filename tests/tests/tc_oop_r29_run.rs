@@ -14,7 +14,7 @@
 //!   the same list, with `0` elements (Infosys "Interface"; before: E0336).
 
 mod common;
-use common::{check_files, column, run_stimulated, run_stimulated_files, write_in};
+use common::{column, run_stimulated, run_stimulated_files, write_in};
 
 /// A TwinCAT `.TcPOU` holding function block `FB_Seq` (`header` its first line) whose body is the
 /// chart Idle (initial) -> `bGo` -> Run (action `aCount`, N) -> `NOT bGo` -> back to Idle, with
@@ -106,28 +106,47 @@ fn a_chart_block_that_extends_and_implements_runs_with_its_base() {
     assert_eq!(column(&trace, "P.counted"), counted);
 }
 
-/// `SUPER^()` in a block that extends a chart block asks to run the base's chart, which ladderc
-/// runs only as its own block's body: one located E0303 naming the base and SFC, nothing more
-/// (before the chart block could extend nothing, and x-PPU got 15 E0303 calling its body
-/// "instruction list" plus 15 E0108 "SUPER^ in a POU that extends no function block").
+/// `SUPER^()` in a block that extends a chart block (itself derived from `FB_Base`) runs one scan
+/// of the base's chart per call (Beckhoff Infosys "SUPER": `SUPER^()` calls the base's body;
+/// round 31): `FB_Child`, whose body is `SUPER^(); k := k + 1;`, counts as `FB_Seq` itself does,
+/// its chart's action writing the inherited `nBase`, and the child's own body runs every scan.
+/// Before round 31: one E0303 "SUPER^() runs the body of `FB_Seq`, which is SFC: not supported"
+/// (and before round 29 x-PPU got 15 E0303 calling its body "instruction list" plus 15 E0108).
 #[test]
-fn super_call_of_a_chart_base_is_one_located_error() {
-    let child = "FUNCTION_BLOCK FB_Child EXTENDS FB_Seq\nVAR\n  k : INT;\nEND_VAR\nSUPER^();\nk := k + 1;\nEND_FUNCTION_BLOCK\n";
-    let (code, lines) = check_files(&[
-        (
-            "FB_Seq.TcPOU",
-            &sfc_block("FUNCTION_BLOCK FB_Seq EXTENDS FB_Base IMPLEMENTS I_Count"),
-        ),
-        (
-            "main.st",
-            &BASE_AND_MAIN.replace("seq : FB_Seq", "seq : FB_Child"),
-        ),
-        ("child.st", child),
-    ]);
-    assert_eq!(code, Some(1), "{lines:?}");
+fn super_call_of_a_chart_base_runs_its_chart() {
+    let child = "FUNCTION_BLOCK FB_Child EXTENDS FB_Seq\nVAR_OUTPUT\n  k : INT;\nEND_VAR\nSUPER^();\nk := k + 1;\nEND_FUNCTION_BLOCK\n";
+    let dir = tempfile::tempdir().unwrap();
+    write_in(
+        dir.path(),
+        "FB_Seq.TcPOU",
+        &sfc_block("FUNCTION_BLOCK FB_Seq EXTENDS FB_Base IMPLEMENTS I_Count"),
+    );
+    write_in(
+        dir.path(),
+        "main.st",
+        &BASE_AND_MAIN
+            .replace("seq : FB_Seq", "seq : FB_Child;\n  steps : INT")
+            .replace("n := seq.nRun;", "n := seq.nRun;\nsteps := seq.k;"),
+    );
+    write_in(dir.path(), "child.st", child);
+    let (trace, _) = run_stimulated_files(
+        &[
+            dir.path().join("FB_Seq.TcPOU"),
+            dir.path().join("main.st"),
+            dir.path().join("child.st"),
+        ],
+        &["--cycle-ms", "10"],
+        9,
+        "2,P.go,1\n5,P.go,0\n",
+        "P.n,P.base,P.steps",
+    );
+    let n = column(&trace, "P.n");
+    assert_eq!(n, [0., 0., 1., 2., 3., 4., 4., 4., 4.], "{trace}");
+    let base: Vec<f64> = n.iter().map(|v| v * 10.).collect();
+    assert_eq!(column(&trace, "P.base"), base);
     assert_eq!(
-        lines,
-        ["child.st:5:1: error[E0303]: SUPER^() runs the body of `FB_Seq`, which is SFC: not supported"]
+        column(&trace, "P.steps"),
+        [1., 2., 3., 4., 5., 6., 7., 8., 9.]
     );
 }
 

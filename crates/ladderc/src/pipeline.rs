@@ -1913,10 +1913,25 @@ fn lower_textual_sfc(
             (k, (map, found))
         })
         .collect();
+    // each chart by its block's name, for the blocks derived from it (`SUPER^()`)
+    let by_name: std::collections::HashMap<String, usize> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|item| match item {
+            LibraryElement::Pou(p) => charts
+                .get(&(p.name.span.file, p.name.span.start as usize))
+                .map(|&k| (p.name.key(), k)),
+            _ => None,
+        })
+        .collect();
     for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
         let LibraryElement::Pou(p) = item else {
             continue;
         };
+        if !by_name.is_empty() {
+            let acts = own.get(&p.name.key()).map(|(acts, _)| acts);
+            super_charts(p, pending, (&by_name, acts), &index, map, diags);
+        }
         let Some(k) = charts.remove(&(p.name.span.file, p.name.span.start as usize)) else {
             continue;
         };
@@ -1960,6 +1975,114 @@ fn lower_textual_sfc(
                 diags.push(d.clone());
             }
         }
+    }
+}
+
+/// The lowered bodies of a POU's actions, by action name (upper case).
+type ActionBodies = std::collections::HashMap<String, Vec<il_frontend::ast::IlStmt>>;
+
+/// `SUPER^()` in a block derived from a block whose body is a chart (`CAL __SUPER_SFC_<base>`,
+/// `il_frontend::st::file::SUPER_CHART_CALL`): one scan of the base's chart in the derived
+/// block's instance per call (Beckhoff infosys "SUPER": `SUPER^()` calls the base's body). The
+/// chart is lowered again with the derived block (its variables are the base's and its own); its
+/// steps, step times and action control are hidden variables of the derived block, and
+/// `Step.X`/`Step.T` in the derived block's body read them; the chart's calls of the block's
+/// actions (`actions`, the base's it inherits) are inlined. A derived block that never calls
+/// `SUPER^()` runs no chart. Diagnostics of the chart itself are the base's (already reported).
+fn super_charts(
+    p: &mut il_frontend::ast::Pou,
+    pending: &[il_frontend::st::file::PendingBody],
+    (by_name, actions): (
+        &std::collections::HashMap<String, usize>,
+        Option<&ActionBodies>,
+    ),
+    index: &ladder_compiler::project::Index,
+    map: &diagnostics::SourceMap,
+    diags: &mut diagnostics::Diagnostics,
+) {
+    use il_frontend::ast::{IlStmt, InstrKind, Instruction, VarBlock};
+    use il_frontend::st::file::SUPER_CHART_CALL;
+    let mut bases: Vec<String> = Vec::new();
+    for s in &p.body {
+        if let IlStmt::Instr(Instruction {
+            kind: InstrKind::Call { instance, .. },
+            ..
+        }) = s
+        {
+            if let Some(base) = instance.base.name.strip_prefix(SUPER_CHART_CALL) {
+                if !bases.iter().any(|b| b == base) {
+                    bases.push(base.to_string());
+                }
+            }
+        }
+    }
+    if bases.is_empty() {
+        return;
+    }
+    let mut calls: std::collections::HashMap<String, Vec<IlStmt>> =
+        std::collections::HashMap::new();
+    let mut steps: Vec<String> = Vec::new();
+    let mut hidden_all: Vec<il_frontend::ast::VarDecl> = Vec::new();
+    for base in &bases {
+        let Some(pb) = by_name
+            .get(&base.to_ascii_uppercase())
+            .and_then(|&k| pending.get(k))
+        else {
+            continue;
+        };
+        let src = map.get(pb.file).text.as_str();
+        let body = pb.base..pb.base + pb.text.len();
+        let mut local = diagnostics::Diagnostics::new();
+        let (code, hidden, names) = if src.get(body.clone()) == Some(pb.text.as_str()) {
+            ladder_compiler::sfc::text::lower(pb.file, src, body, p, index, &mut local)
+        } else {
+            // (as in `lower_textual_sfc`: a body that is not its file's text, padded)
+            let mut padded = " ".repeat(pb.base);
+            padded.push_str(&pb.text);
+            ladder_compiler::sfc::text::lower(pb.file, &padded, body, p, index, &mut local)
+        };
+        for d in local.into_vec() {
+            if !diags.iter().any(|e| e.code == d.code && e.span == d.span) {
+                diags.push(d);
+            }
+        }
+        for v in hidden {
+            if !hidden_all.iter().any(|h| h.name.key() == v.name.key()) {
+                hidden_all.push(v);
+            }
+        }
+        steps.extend(names);
+        calls.insert(
+            format!("{SUPER_CHART_CALL}{base}").to_ascii_uppercase(),
+            code,
+        );
+    }
+    let mut next = 0;
+    p.body = il_frontend::actions::inline_calls(
+        std::mem::take(&mut p.body),
+        &calls,
+        &|_| false,
+        "__SFCS",
+        &mut next,
+        diags,
+    );
+    // the chart's `CAL Act` of the block's actions (the base's, which it inherits)
+    if let Some(acts) = actions {
+        let is_var = il_frontend::actions::declares(p);
+        p.body = il_frontend::actions::inline_calls(
+            std::mem::take(&mut p.body),
+            acts,
+            &is_var,
+            "__SFCA",
+            &mut next,
+            diags,
+        );
+    }
+    ladder_compiler::sfc::rename_step_flags(&mut p.body, &steps);
+    if !hidden_all.is_empty() {
+        let end = p.name.span.end as usize;
+        let span = diagnostics::Span::new(p.name.span.file, end, end);
+        p.var_blocks.push(VarBlock::locals(hidden_all, span));
     }
 }
 

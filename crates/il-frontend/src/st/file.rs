@@ -2918,11 +2918,38 @@ pub fn compile_pending(
     }
     decls.bases = bases;
     // the type of a chart's steps, which its actions read (`Step.X`, `Step.T`)
-    if let Some(pb) = pending.iter().find(|pb| pb.sfc && !pb.actions.is_empty()) {
+    // (and a derived block's body, which reads its bases' charts)
+    let runs_chart = |pb: &&PendingBody| {
+        (pb.sfc && !pb.actions.is_empty())
+            || matches!(pb.oop.as_deref(),
+                Some(super::inherit::Oop::Block(b)) if !b.super_charts.is_empty())
+    };
+    if let Some(pb) = pending.iter().find(runs_chart) {
         let at = Span::new(pb.file, pb.base, pb.base);
         decls.add_type(super::sfc::step_type(at));
     }
     decls.derived = derived;
+    // the charts of the bases whose body is SFC, by the base's name: a derived block's
+    // `SUPER^()` runs one (`super_chart_call`), and its body reads their steps' flags
+    let charts: std::collections::HashMap<String, &PendingBody> = pending
+        .iter()
+        .filter(|pb| pb.sfc)
+        .filter_map(|pb| {
+            let p = units
+                .iter()
+                .flat_map(|u| u.items.iter())
+                .find_map(|i| match i {
+                    LibraryElement::Pou(p)
+                        if p.name.span.file == pb.file
+                            && p.name.span.start as usize == pb.name_start =>
+                    {
+                        Some(p.name.key())
+                    }
+                    _ => None,
+                })?;
+            Some((p, pb))
+        })
+        .collect();
     // (a chart's body is lowered by the caller, its actions and methods here)
     for pb in pending.iter().filter(|pb| {
         !pb.sfc || !pb.actions.is_empty() || !pb.methods.is_empty() || !pb.var_inits.is_empty()
@@ -2972,11 +2999,26 @@ pub fn compile_pending(
                     continue;
                 }
                 // a chart's actions read its steps' flags (`Fill.T`, `S0.x`)
-                let chart_steps = if pb.sfc && !pb.actions.is_empty() {
+                let mut chart_steps = if pb.sfc && !pb.actions.is_empty() {
                     super::sfc::step_names(pb.file, &pb.text)
                 } else {
                     Vec::new()
                 };
+                // `SUPER^()` of a base whose body is a chart: a call of a hidden action, kept
+                // as one `CAL` for the caller to replace by a scan of the chart
+                let mut super_charts: Vec<(crate::ast::Ident, Vec<crate::IlStmt>)> = Vec::new();
+                if let Some(super::inherit::Oop::Block(b)) = pb.oop.as_deref() {
+                    for (hidden, base) in &b.super_charts {
+                        let Some(chart) = charts.get(&base.to_ascii_uppercase()) else {
+                            continue;
+                        };
+                        chart_steps.extend(super::sfc::step_names(chart.file, &chart.text));
+                        super_charts.push((
+                            crate::ast::Ident::new(hidden, p.name.span),
+                            vec![super_chart_call(base, p.name.span)],
+                        ));
+                    }
+                }
                 let (body, temps, actions) = super::compile_body_with_actions(
                     pb.file,
                     if pb.sfc { "" } else { &pb.text },
@@ -2984,7 +3026,7 @@ pub fn compile_pending(
                     &decls,
                     p,
                     (&pb.actions, &chart_steps),
-                    &[],
+                    &super_charts,
                     span,
                     diags,
                 );
@@ -3940,6 +3982,28 @@ fn holds_pou(ty: &crate::ast::TypeRef, pou: &crate::ast::Ident) -> bool {
         crate::ast::TypeRef::Array { element, .. } => holds_pou(element, pou),
         _ => false,
     }
+}
+
+/// The prefix of the instance a `CAL` names where a derived block's `SUPER^()` runs the chart of
+/// its base (`__SUPER_SFC_<base>`): replaced by a scan of that chart when charts are lowered
+/// (ladderc's `lower_textual_sfc`); never a name of the program (two underscores in a row).
+pub const SUPER_CHART_CALL: &str = "__SUPER_SFC_";
+
+/// `CAL __SUPER_SFC_<base>` at `span`.
+fn super_chart_call(base: &str, span: Span) -> crate::IlStmt {
+    use crate::ast::{CallArgs, Condition, InstrKind, Instruction, VarRef};
+    crate::IlStmt::Instr(Instruction {
+        kind: InstrKind::Call {
+            cond: Condition::Always,
+            instance: Box::new(VarRef {
+                base: crate::ast::Ident::new(format!("{SUPER_CHART_CALL}{base}"), span),
+                accessors: Default::default(),
+                span,
+            }),
+            args: CallArgs::None,
+        },
+        span,
+    })
 }
 
 #[cfg(test)]

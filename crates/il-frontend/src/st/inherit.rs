@@ -10,7 +10,8 @@
 //! own (the derived block's body replaces the base's, which runs only where `SUPER^()` calls it, as
 //! CODESYS and Beckhoff document `SUPER`). `SUPER^.M()` in a text of level `j` of the chain calls the
 //! version of `M` visible at level `j - 1` (a hidden method `__S<level>_M`), `SUPER^()` the body of
-//! level `j - 1` (a hidden method `__B<level>`); any other call of a method (`M2()`, `THIS^.M2()`),
+//! level `j - 1` (a hidden method `__B<level>`; when that body is SFC, a hidden action `__C<level>`
+//! the caller replaces by one scan of the base's chart, [`BlockOop::super_charts`]); any other call of a method (`M2()`, `THIS^.M2()`),
 //! also inside an inherited method, calls the derived block's version: late binding on the
 //! instance's own type, without pointers, since each derived block has its own copy.
 //! Invariants: every chain is finite (a cycle is E0331, never followed); texts are rewritten in place
@@ -51,6 +52,9 @@ pub struct BlockOop {
     /// After [`flatten`]: the file of each of the body's methods (inherited ones come from their
     /// base's file); empty before, when every method is in the body's file.
     pub method_files: Vec<FileId>,
+    /// After [`flatten`]: the bases whose chart (SFC body) `SUPER^()` runs in this block, each as
+    /// (the hidden action's name, [`super_chart`], the base's name).
+    pub super_charts: Vec<(String, String)>,
 }
 
 /// An `INTERFACE name [EXTENDS I0, ...] METHOD ... END_METHOD ... END_INTERFACE`.
@@ -151,6 +155,7 @@ impl Oop {
                 is_abstract,
                 deferred: Vec::new(),
                 method_files: Vec::new(),
+                super_charts: Vec::new(),
             })
         })
     }
@@ -165,8 +170,8 @@ struct Class {
     pending: Option<usize>,
     /// Its body is non-empty IL (no pending body): `SUPER^()` cannot run it.
     il_body: bool,
-    /// Its body is SFC (a chart, lowered by the caller, not as a method): `SUPER^()` cannot run
-    /// it.
+    /// Its body is SFC (a chart, lowered by the caller, not as a method): `SUPER^()` calls a
+    /// hidden action the caller replaces by one scan of the chart.
     sfc_body: bool,
     oop: BlockOop,
 }
@@ -765,6 +770,12 @@ fn super_body(level: usize) -> String {
     format!("__B{level:03}")
 }
 
+/// The hidden action `SUPER^()` calls when the body of level `level` of a chain is SFC: one scan
+/// of that level's chart in the derived block (as long as `SUPER^`).
+pub fn super_chart(level: usize) -> String {
+    format!("__C{level:03}")
+}
+
 /// Flattens one derived block (`chain`, root first, the block last) into `pb` and its POU.
 fn flatten_one(
     units: &mut [CompilationUnit],
@@ -859,6 +870,7 @@ fn flatten_one(
         levels: &levels,
         versions: &versions,
         needed: Vec::new(),
+        charts: Vec::new(),
     };
     let mut methods = Vec::new();
     let mut files = Vec::new();
@@ -946,6 +958,13 @@ fn flatten_one(
     pb.methods = methods;
     if let Some(Oop::Block(b)) = pb.oop.as_deref_mut() {
         b.method_files = files;
+        let mut charts = std::mem::take(&mut ctx.charts);
+        charts.sort();
+        charts.dedup();
+        b.super_charts = charts
+            .into_iter()
+            .map(|j| (super_chart(j), levels[j].name.name.clone()))
+            .collect();
     }
 }
 
@@ -961,6 +980,8 @@ struct Rewrite<'a> {
     levels: &'a [&'a Class],
     versions: &'a HashMap<String, Vec<(usize, &'a PendingMethod, FileId)>>,
     needed: Vec<Hidden>,
+    /// The levels whose chart `SUPER^()` runs.
+    charts: Vec<usize>,
 }
 
 impl Rewrite<'_> {
@@ -1052,32 +1073,30 @@ impl Rewrite<'_> {
                 }
                 Some(Tok::LParen) => {
                     let base = self.levels[parent];
-                    if base.il_body || base.sfc_body {
-                        let (language, hint) = if base.sfc_body {
-                            (
-                                "SFC",
-                                "ladderc runs a chart as the body of its own block only: move the work SUPER^() should do into a METHOD of the base and call it (`SUPER^.Step();`), or write the base's body in Structured Text",
-                            )
-                        } else {
-                            (
-                                "instruction list",
-                                "write the base's body in Structured Text",
-                            )
-                        };
+                    if base.sfc_body {
+                        // a chart: one scan of the base's chart per call, its steps in the
+                        // instance (Beckhoff infosys "SUPER": `SUPER^()` runs the base's body);
+                        // the call of the hidden action is replaced by that scan when the
+                        // charts are lowered (ladderc's `lower_textual_sfc`)
+                        out.replace_range(
+                            toks[k].range.start..toks[k + 1].range.end,
+                            &super_chart(parent),
+                        );
+                        self.charts.push(parent);
+                        continue;
+                    }
+                    if base.il_body {
                         diags.push(
                             Diagnostic::error(
                                 code::E0303,
                                 format!(
-                                    "SUPER^() runs the body of `{}`, which is {language}: not supported",
+                                    "SUPER^() runs the body of `{}`, which is instruction list: not supported",
                                     base.name.name
                                 ),
                             )
                             .at(at)
-                            .with_primary_label(format!(
-                                "the base's body is {}",
-                                if base.sfc_body { "SFC" } else { "IL" }
-                            ))
-                            .with_hint(hint),
+                            .with_primary_label("the base's body is IL")
+                            .with_hint("write the base's body in Structured Text"),
                         );
                         // the call is left out (blanked up to its `)`, so that positions stay):
                         // one error, no E0108 for the `SUPER^` left behind

@@ -18,7 +18,9 @@
 //!
 //! A chart may also be the body of a POU's action ([`crate::body`]): its hidden variables are then
 //! renamed per action ([`names::in_action`]), except a flag variable ladderc declares
-//! (`SFCReset`, one variable of the POU).
+//! (`SFCReset`, one variable of the POU). A textual or TwinCAT chart also runs where a block derived
+//! from its block calls `SUPER^()` (ladderc's `super_charts`): one scan per call, lowered again with
+//! the derived block, its hidden variables the derived block's.
 //!
 //! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
 //! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
