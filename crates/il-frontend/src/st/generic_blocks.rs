@@ -25,7 +25,7 @@
 //! follow-on error); expressions are evaluated with checked arithmetic and a depth cap.
 
 use super::lexer::{lex, Kw, Tok, Token};
-use crate::ast::{CompilationUnit, LibraryElement, PouKind, TypeDef, TypeRef};
+use crate::ast::{CompilationUnit, LibraryElement, PouKind, TypeRef};
 use crate::const_eval::{ConstNum, Constants};
 use diagnostics::{code, Diagnostic, Diagnostics};
 use std::ops::Range;
@@ -343,42 +343,7 @@ pub fn specialise_instances(
             }
         });
     };
-    for unit in units.iter_mut() {
-        for item in &mut unit.items {
-            match item {
-                LibraryElement::Pou(p) => p
-                    .var_blocks
-                    .iter_mut()
-                    .flat_map(|b| b.vars.iter_mut())
-                    .for_each(|v| each(&mut v.ty)),
-                LibraryElement::GlobalVars(b) => b.vars.iter_mut().for_each(|v| each(&mut v.ty)),
-                LibraryElement::Configuration(c) => c
-                    .globals
-                    .iter_mut()
-                    .chain(c.resources.iter_mut().flat_map(|r| r.globals.iter_mut()))
-                    .flat_map(|b| b.vars.iter_mut())
-                    .for_each(|v| each(&mut v.ty)),
-                LibraryElement::DataTypes(types) => {
-                    for t in types {
-                        match &mut t.def {
-                            TypeDef::Struct { fields } => {
-                                fields.iter_mut().for_each(|v| each(&mut v.ty))
-                            }
-                            TypeDef::Alias { ty, .. } => each(ty),
-                            TypeDef::Enum { .. } => {}
-                        }
-                    }
-                }
-                LibraryElement::Action(_) => {}
-            }
-        }
-    }
-    for m in pending.iter_mut().flat_map(|b| b.methods.iter_mut()) {
-        m.blocks
-            .iter_mut()
-            .flat_map(|b| b.vars.iter_mut())
-            .for_each(|v| each(&mut v.ty));
-    }
+    super::generic_constants::each_declared_type(units, pending, &mut each);
     built
 }
 

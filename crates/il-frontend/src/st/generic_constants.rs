@@ -122,32 +122,44 @@ pub(super) fn name_generic_instances(
     unit: &mut crate::ast::CompilationUnit,
     pending: &mut [super::file::PendingBody],
 ) {
-    use crate::ast::{LibraryElement, TypeDef};
     if instances.is_empty() {
         return;
     }
-    let name = |ty: &mut crate::ast::TypeRef| name_type(instances, ty);
-    for item in &mut unit.items {
+    each_declared_type(
+        std::slice::from_mut(unit),
+        pending,
+        &mut |ty: &mut crate::ast::TypeRef| name_type(instances, ty),
+    );
+}
+
+/// Calls `f` on the type of every variable and field `units` and `pending` declare: POU variables,
+/// global lists, configurations and their resources, structure fields and aliases, and the
+/// variables of the METHODs left to the ST front end (enumerations hold no types).
+pub(super) fn each_declared_type(
+    units: &mut [crate::ast::CompilationUnit],
+    pending: &mut [super::file::PendingBody],
+    f: &mut impl FnMut(&mut crate::ast::TypeRef),
+) {
+    use crate::ast::{LibraryElement, TypeDef};
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
         match item {
             LibraryElement::Pou(p) => p
                 .var_blocks
                 .iter_mut()
                 .flat_map(|b| b.vars.iter_mut())
-                .for_each(|v| name(&mut v.ty)),
-            LibraryElement::GlobalVars(b) => b.vars.iter_mut().for_each(|v| name(&mut v.ty)),
+                .for_each(|v| f(&mut v.ty)),
+            LibraryElement::GlobalVars(b) => b.vars.iter_mut().for_each(|v| f(&mut v.ty)),
             LibraryElement::Configuration(c) => c
                 .globals
                 .iter_mut()
                 .chain(c.resources.iter_mut().flat_map(|r| r.globals.iter_mut()))
                 .flat_map(|b| b.vars.iter_mut())
-                .for_each(|v| name(&mut v.ty)),
+                .for_each(|v| f(&mut v.ty)),
             LibraryElement::DataTypes(types) => {
                 for t in types {
                     match &mut t.def {
-                        TypeDef::Struct { fields } => {
-                            fields.iter_mut().for_each(|v| name(&mut v.ty))
-                        }
-                        TypeDef::Alias { ty, .. } => name(ty),
+                        TypeDef::Struct { fields } => fields.iter_mut().for_each(|v| f(&mut v.ty)),
+                        TypeDef::Alias { ty, .. } => f(ty),
                         TypeDef::Enum { .. } => {}
                     }
                 }
@@ -159,7 +171,7 @@ pub(super) fn name_generic_instances(
         m.blocks
             .iter_mut()
             .flat_map(|b| b.vars.iter_mut())
-            .for_each(|v| name(&mut v.ty));
+            .for_each(|v| f(&mut v.ty));
     }
 }
 
