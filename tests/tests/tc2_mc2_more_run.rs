@@ -422,7 +422,8 @@ fn the_language_server_reads_tc2_mc2_as_the_command_line_does() {
         "{l:?}"
     );
     let l = complete(12, 6);
-    assert_eq!(l, ["ReadStatus", "Status", "NcToPlc"]);
+    // `PlcToNc` since round 31 (its `Override` is written and read back: `tc_r31_run.rs`)
+    assert_eq!(l, ["ReadStatus", "Status", "NcToPlc", "PlcToNc"]);
     let l = complete(13, 13);
     assert!(
         l.contains(&"StandStill".to_string()) && l.contains(&"Moving".to_string()),
