@@ -11,13 +11,13 @@
 //! block of its own size, as the values bound its arrays, so C needs one block per set of values.
 //!
 //! Input: the texts of the files that declare such blocks ([`generic_blocks`]), and the parsed
-//! units whose declarations name `FB_X<...>` (written there by [`super::generic_constants`]).
+//! units whose declarations name `FB_X<...>` (written there by `super::generic_constants`).
 //! Output ([`specialise_instances`]): each such type renamed to the block of its values,
 //! `FB_Buf__10` (`FB_Buf__10_1000` for two values, `m` for a minus: `FB_Buf__m1`), or to the block
 //! itself when the values are its initial values (an instance without `<...>` has them too); the
 //! list of the blocks to build: the caller parses the block's file again, as a file of its own,
 //! within [`with_instance_values`], so that the block's generic constants take the instance's
-//! values (in the bounds they give and as their initial values: [`instance_value`], which the
+//! values (in the bounds they give and as their initial values: `instance_value`, which the
 //! declarations' parser asks), and renames the block.
 //! Invariants: no panics on input; an instance's value that is not an integer constant expression,
 //! a value too many, a name the block does not declare, or `<...>` on a block without generic
@@ -483,7 +483,7 @@ thread_local! {
 
 /// Runs `parse` (of `block`'s file) with the generic constants of `block` taking `values` in
 /// place of their initial values: in the bounds and lengths they give, and as the constants'
-/// initial values (see [`instance_value`]).
+/// initial values (see `instance_value`).
 pub fn with_instance_values<R>(
     block: &GenericBlock,
     values: &[i128],

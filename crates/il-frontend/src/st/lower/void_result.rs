@@ -3,8 +3,8 @@
 //! `Inv := 0 - v;`.
 //!
 //! IEC 61131-3 ed. 3 (6.6.2.2) makes a function's result the variable named after the function, of
-//! the result type declared after its name; Beckhoff's "Object Function" page (TwinCAT 3: "FUNCTION
-//! <function> : <data type>", "The output variable of a function is the function name") says the
+//! the result type declared after its name; Beckhoff's "Object Function" page (TwinCAT 3: `FUNCTION
+//! <function> : <data type>`, "The output variable of a function is the function name") says the
 //! same. ladderc compiles a function without a result type, as TwinCAT does (E0018 is no longer
 //! reported), as one returning no value, so such a function has no variable of its own name: the
 //! assignment has nothing to write. Most often the result type was lost on the way (an exporter
