@@ -1,5 +1,5 @@
 //! A POU's `<body>`: dispatches on the language. LD and FBD are lowered through [`crate::graph`] and
-//! [`crate::lower`], and so is a CODESYS CFC chart (read by [`crate::codesys_cfc`]); SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST is parsed
+//! [`crate::lower`], and so is a CODESYS CFC chart (read by `crate::codesys_cfc`); SFC through [`crate::sfc`]; IL is parsed in place by the IL front end; ST is parsed
 //! and lowered to IL by [`crate::st_body`]. Every POU is lowered and checked, whether a program
 //! instance reaches it or not, as in ST text (before round 29 of issue #13 an ST POU that no program
 //! instance reached was skipped unchecked with W3004, no longer raised).

@@ -12,7 +12,7 @@
 //! structures, or function block instances with an `AXIS_REF` output, holding one:
 //! [`axis_holders`]) are touched; the hidden names start with `__TC2_` (a user cannot write them);
 //! an axis behind a reference is read only while the reference is bound (no NULL is
-//! dereferenced: [`Used::guarded`]); its members read 0 / FALSE until it is first bound.
+//! dereferenced: `Used::guarded`); its members read 0 / FALSE until it is first bound.
 //!
 //! Per Infosys (Tc2_MC2 > AXIS_REF, ST_AxisStatus, NCTOPLC_AXIS_REF): `NcToPlc` is updated by the
 //! NC every cycle, `Status` by `ReadStatus()`. Here both are refreshed at the start of the POU's
