@@ -293,6 +293,7 @@ impl Session {
         let mut twincat_failed: Vec<String> = Vec::new();
         let mut references = None;
         let mut library_projects = Vec::new();
+        let mut project_names = Vec::new();
         // OpenPLC Editor v4: a folder holding project.json stands for its POU files, and its
         // configuration (tasks, instances, globals) is read as one more ST text below
         let mut v4_configs = Vec::new();
@@ -305,6 +306,7 @@ impl Session {
             &mut twincat_failed,
             &mut references,
             &mut library_projects,
+            &mut project_names,
             &mut expand_diags,
         );
         // user libraries given as source projects (`--lib`): their object files first, their
@@ -322,7 +324,17 @@ impl Session {
         let lib_files =
             crate::user_libraries::unshadowed(&libraries.files, &paths, |p: &Path| read(p));
         let paths: Vec<PathBuf> = lib_files.into_iter().chain(paths).collect();
-        let _libraries = il_frontend::st::qualifiers::UserLibraries::set(libraries.namespaces);
+        // and the namespaces of the libraries given as input projects beside the application
+        let mut namespaces = libraries.namespaces;
+        for ns in crate::user_libraries::input_namespaces(
+            references.as_deref().unwrap_or_default(),
+            &project_names,
+        ) {
+            if !namespaces.contains(&ns) {
+                namespaces.push(ns);
+            }
+        }
+        let _libraries = il_frontend::st::qualifiers::UserLibraries::set(namespaces);
         // the projects' compiler defines, known to the conditional pragmas of every file read
         // below (and read again), until this function returns
         let _defines = il_frontend::st::ProjectDefines::set(defines);

@@ -32,7 +32,8 @@ pub fn is_twincat_file(path: &Path) -> bool {
 /// library references to `references` (`None` when no input is a project). A listed file that
 /// does not exist is one E1079 at its `<Compile>` element (the project's text is added to the
 /// session's sources for it), and its stem goes to `missing`. The file name of each project saved
-/// as a library (`is_library_project`) goes to `library_projects`.
+/// as a library (`is_library_project`) goes to `library_projects`, and the names each project may
+/// be referenced by (`user_libraries::identity`) to `project_names`.
 pub fn expand(
     session: &mut Session,
     paths: &[PathBuf],
@@ -40,6 +41,7 @@ pub fn expand(
     missing: &mut Vec<String>,
     references: &mut Option<Vec<crate::user_libraries::Reference>>,
     library_projects: &mut Vec<String>,
+    project_names: &mut Vec<Vec<String>>,
     diags: &mut Diagnostics,
 ) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -101,6 +103,7 @@ pub fn expand(
                     references
                         .get_or_insert_with(Vec::new)
                         .extend(crate::user_libraries::references(&text));
+                    project_names.push(crate::user_libraries::identity(&project, &text).names);
                     let mut project_file = None;
                     for (path, include) in listed_files(&project, &text) {
                         if let Some(found) = listed_file_on_disk(session, &path) {

@@ -245,8 +245,41 @@ fn read_library(session: &Session, lib: &Path, diags: &mut Diagnostics) -> Optio
             return None;
         }
     };
+    let Identity {
+        names,
+        title,
+        default_namespace,
+    } = identity(&project, &text);
+    // an Include is matched as the application's are: regardless of case (Windows file names)
+    let files = crate::twincat::listed_files(&project, &text)
+        .into_iter()
+        .map(|(f, _)| crate::twincat::listed_file_on_disk(session, &f).unwrap_or(f))
+        .filter(|f| !crate::twincat::has_extension(f, "tctto"))
+        .collect();
+    Some(LibraryProject {
+        references: references(&text),
+        project,
+        names,
+        title,
+        default_namespace,
+        files,
+    })
+}
+
+/// A TwinCAT project's names, as a reference may name it.
+pub struct Identity {
+    /// Upper case: `<Title>`, `<Name>`, the file's stem.
+    pub names: Vec<String>,
+    /// `<Title>`, else `<Name>`, else the file's stem, as written.
+    pub title: String,
+    /// `<DefaultNamespace>`, else its title.
+    pub default_namespace: String,
+}
+
+/// The names of the TwinCAT project `project` whose text is `text`.
+pub fn identity(project: &Path, text: &str) -> Identity {
     let arena = ladder_compiler::xml::Arena::new();
-    let (root, _) = ladder_compiler::xml::parse(&text, &arena);
+    let (root, _) = ladder_compiler::xml::parse(text, &arena);
     let property = |name: &str| {
         root.as_ref().and_then(|r| {
             r.walk()
@@ -274,20 +307,32 @@ fn read_library(session: &Session, lib: &Path, diags: &mut Diagnostics) -> Optio
         }
     }
     let default_namespace = property("DefaultNamespace").unwrap_or(title.clone());
-    // an Include is matched as the application's are: regardless of case (Windows file names)
-    let files = crate::twincat::listed_files(&project, &text)
-        .into_iter()
-        .map(|(f, _)| crate::twincat::listed_file_on_disk(session, &f).unwrap_or(f))
-        .filter(|f| !crate::twincat::has_extension(f, "tctto"))
-        .collect();
-    Some(LibraryProject {
-        references: references(&text),
-        project,
+    Identity {
         names,
         title,
         default_namespace,
-        files,
-    })
+    }
+}
+
+/// The namespaces of `references` that name one of the input projects (`inputs`: each one's
+/// [`Identity::names`]): a library given as an input project beside the application that
+/// references it (`ladderc check App.plcproj Lib.plcproj`) is read with the application like any
+/// input, and its qualifier (`Lib.T`) is dropped as a `--lib` library's is (before round 32: E1032
+/// "give its source project with --lib, or add its POUs and types to the project" although they
+/// were added), upper case.
+pub fn input_namespaces(references: &[Reference], inputs: &[Vec<String>]) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    for r in references {
+        let ns = r.namespace.to_ascii_uppercase();
+        if inputs
+            .iter()
+            .any(|names| names.iter().any(|n| r.names.contains(n)))
+            && !out.contains(&ns)
+        {
+            out.push(ns);
+        }
+    }
+    out
 }
 
 /// The library files `lib_files` without the programs the application's files `app_files` shadow:

@@ -2749,6 +2749,52 @@ pub(super) fn trim_span(src: &str, span: Span) -> Span {
     Span::new(span.file, s + lead, s + lead + line.len())
 }
 
+/// The FUNCTIONs of `units` without result type whose pending body assigns the function's name
+/// (`F := ...` at a statement's start, found by tokens), upper case: their body's E0354 is the one
+/// error (before round 32 each call using the value was one more E0354: three errors for a B&R
+/// function whose `.fun` declaration was not given).
+fn missing_result_assigners(
+    units: &[CompilationUnit],
+    pending: &[PendingBody],
+) -> std::collections::HashSet<String> {
+    let mut out = std::collections::HashSet::new();
+    for pb in pending.iter().filter(|pb| !pb.sfc && !pb.il) {
+        let Some(p) = units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .find_map(|i| match i {
+                LibraryElement::Pou(p)
+                    if p.name.span.file == pb.file
+                        && p.name.span.start as usize == pb.name_start =>
+                {
+                    Some(p)
+                }
+                _ => None,
+            })
+        else {
+            continue;
+        };
+        if p.kind != crate::ast::PouKind::Function || p.return_type.is_some() {
+            continue;
+        }
+        let (toks, _) = lex(&pb.text);
+        let assigned = toks.windows(2).enumerate().any(|(k, w)| {
+            w[0].tok == Tok::Ident
+                && w[1].tok == Tok::Assign
+                && pb.text[w[0].range.clone()].eq_ignore_ascii_case(&p.name.name)
+                && (k == 0
+                    || matches!(
+                        toks[k - 1].tok,
+                        Tok::Semi | Tok::Kw(Kw::Then | Kw::Else | Kw::Do)
+                    ))
+        });
+        if assigned {
+            out.insert(p.name.key());
+        }
+    }
+    out
+}
+
 /// Lowers the pending ST bodies into their POUs. `units` must hold every unit of the program (the
 /// declarations of all of them are visible to every body).
 pub fn compile_pending(
@@ -2896,6 +2942,7 @@ pub fn compile_pending(
         }
     }
     let mut decls = super::Declarations::from_units(units);
+    decls.assigns_missing_result = missing_result_assigners(units, pending);
     for pb in pending.iter().filter(|pb| !pb.methods.is_empty()) {
         for unit in units.iter() {
             for item in unit.items.iter() {

@@ -2834,6 +2834,11 @@ impl<'d> PouLowering<'d> {
                 .is_some_and(|p| p.kind == PouKind::Function && p.ret.is_none())
             && self.env().var_type(name).is_none()
         {
+            // (a body that assigns the function's name has its own E0354, which says it all)
+            if self.decls.assigns_missing_result.contains(&name.key()) {
+                self.poisoned = true;
+                return;
+            }
             diags.push(
                 Diagnostic::error(
                     code::E0354,

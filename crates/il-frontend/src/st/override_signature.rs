@@ -51,7 +51,7 @@ pub fn keep_base_signatures(
                 .filter(|(_, b, _)| !is_private(b))
                 .map(|&(i, b, _)| (i, b));
             match overridden {
-                Some((i, b)) if super::inherit::signature(b) != super::inherit::signature(m) => {
+                Some((i, b)) if !same_signature(b, m) => {
                     diags.push(mismatch(m, levels.get(j), b, levels.get(i)));
                     let widest = dropped
                         .entry(key.clone())
@@ -66,6 +66,42 @@ pub fn keep_base_signatures(
         *list = kept;
     }
     dropped
+}
+
+/// Whether `base` and `m` have one signature: equal, or equal but for types that one of them
+/// writes with a library qualifier the other leaves out (`i : Resi4MPM.ParameterSet` against the
+/// base's `i : ParameterSet`, the library given as another input or missing: `qualifiers` wrote
+/// the qualified one `__si4MPM_ParameterSet`, and a missing library is its own E1032). Before
+/// round 32 such a pair was E1084.
+fn same_signature(base: &PendingMethod, m: &PendingMethod) -> bool {
+    let (a, b) = (
+        super::inherit::signature(base),
+        super::inherit::signature(m),
+    );
+    if a == b {
+        return true;
+    }
+    let words = |s: &str| {
+        s.split([' ', ':', '[', ']', ','])
+            .map(str::to_string)
+            .collect::<Vec<_>>()
+    };
+    let (a, b) = (words(&a), words(&b));
+    a.len() == b.len()
+        && a.iter()
+            .zip(&b)
+            .all(|(x, y)| x == y || qualified(x, y) || qualified(y, x))
+}
+
+/// Whether `q` is `t` written with a library qualifier (`__<qualifier less its first two
+/// characters>_<t>`, upper case, as `qualifiers` writes `Lib.T`).
+fn qualified(q: &str, t: &str) -> bool {
+    !t.is_empty()
+        && !t.starts_with("__")
+        && q.len() > t.len() + 3
+        && q.starts_with("__")
+        && q.ends_with(t)
+        && q.as_bytes()[q.len() - t.len() - 1] == b'_'
 }
 
 /// How widely an access lets a method be called: PUBLIC (`None`) 2, PROTECTED 1, PRIVATE 0.

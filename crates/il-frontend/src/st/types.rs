@@ -88,6 +88,10 @@ pub struct Declarations {
     /// Whether any declaration holds a `REFERENCE TO` (computed on the first
     /// [`Declarations::has_reference_to`], once the declarations are complete).
     references: std::sync::OnceLock<bool>,
+    /// The FUNCTIONs declared without a result type whose body assigns the function's name
+    /// (upper case): the body's E0354 ([`super::lower`]'s `void_result`) says what is wrong, so a
+    /// call that uses their value reports nothing more.
+    pub assigns_missing_result: std::collections::HashSet<String>,
     /// The files where E0351 (`__NEW` / `__DELETE`) was reported: once per file (`lower::dynamic_memory`).
     pub(super) heap_reported:
         std::sync::Arc<std::sync::Mutex<std::collections::HashSet<crate::FileId>>>,
