@@ -292,8 +292,7 @@ impl Session {
         let mut defines = Vec::new();
         let mut twincat_failed: Vec<String> = Vec::new();
         let mut references = None;
-        let mut library_projects = Vec::new();
-        let mut project_names = Vec::new();
+        let mut projects_read = crate::twincat::ProjectsRead::default();
         // OpenPLC Editor v4: a folder holding project.json stands for its POU files, and its
         // configuration (tasks, instances, globals) is read as one more ST text below
         let mut v4_configs = Vec::new();
@@ -305,8 +304,7 @@ impl Session {
             &mut defines,
             &mut twincat_failed,
             &mut references,
-            &mut library_projects,
-            &mut project_names,
+            &mut projects_read,
             &mut expand_diags,
         );
         // user libraries given as source projects (`--lib`): their object files first, their
@@ -328,7 +326,7 @@ impl Session {
         let mut namespaces = libraries.namespaces;
         for ns in crate::user_libraries::input_namespaces(
             references.as_deref().unwrap_or_default(),
-            &project_names,
+            &projects_read.names,
         ) {
             if !namespaces.contains(&ns) {
                 namespaces.push(ns);
@@ -844,7 +842,7 @@ impl Session {
                 &twincat_units,
                 &twincat_tasks,
                 &twincat_failed,
-                &library_projects,
+                &projects_read.libraries,
             );
         }
         // VAR_CONFIG once every file is read: a configuration names programs of other files

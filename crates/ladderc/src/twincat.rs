@@ -26,22 +26,30 @@ pub fn is_twincat_file(path: &Path) -> bool {
         .is_some_and(|e| OBJECT_EXTENSIONS.contains(&e.as_str()) || e == "plcproj")
 }
 
+/// What [`expand`] read of the TwinCAT projects given.
+#[derive(Debug, Default)]
+pub struct ProjectsRead {
+    /// The file name of each project saved as a library.
+    pub libraries: Vec<String>,
+    /// The names each project may be referenced by (`user_libraries::identity`).
+    pub names: Vec<Vec<String>>,
+}
+
 /// `paths` with each `.plcproj` file, and each folder holding one (directly or up to three folders
 /// down, as a `.tsproj`/`.sln` folder does), replaced by the object files the project lists. The
 /// compiler defines of the projects' properties (`<CompilerDefines>`) go to `defines`, their
 /// library references to `references` (`None` when no input is a project). A listed file that
 /// does not exist is one E1079 at its `<Compile>` element (the project's text is added to the
 /// session's sources for it), and its stem goes to `missing`. The file name of each project saved
-/// as a library (`is_library_project`) goes to `library_projects`, and the names each project may
-/// be referenced by (`user_libraries::identity`) to `project_names`.
+/// as a library (`is_library_project`) and the names each project may be referenced by go to
+/// `projects`.
 pub fn expand(
     session: &mut Session,
     paths: &[PathBuf],
     defines: &mut Vec<(String, String)>,
     missing: &mut Vec<String>,
     references: &mut Option<Vec<crate::user_libraries::Reference>>,
-    library_projects: &mut Vec<String>,
-    project_names: &mut Vec<Vec<String>>,
+    projects: &mut ProjectsRead,
     diags: &mut Diagnostics,
 ) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -94,7 +102,7 @@ pub fn expand(
                 Ok(text) => {
                     defines.extend(compiler_defines(&text));
                     if is_library_project(&text) {
-                        library_projects.push(
+                        projects.libraries.push(
                             project
                                 .file_name()
                                 .map_or_else(String::new, |n| n.to_string_lossy().into_owned()),
@@ -103,7 +111,9 @@ pub fn expand(
                     references
                         .get_or_insert_with(Vec::new)
                         .extend(crate::user_libraries::references(&text));
-                    project_names.push(crate::user_libraries::identity(&project, &text).names);
+                    projects
+                        .names
+                        .push(crate::user_libraries::identity(&project, &text).names);
                     let mut project_file = None;
                     for (path, include) in listed_files(&project, &text) {
                         if let Some(found) = listed_file_on_disk(session, &path) {
