@@ -288,3 +288,79 @@ END_PROGRAM
         "{errors:?}"
     );
 }
+
+/// x-PPU's `ObservePicAlpha`: a method hands `INT_TO_LREAL(p^.dist)` to another block's method
+/// (hoisted into a temporary), then tests a BOOL property read through the same pointer. The
+/// lowering's type cache was keyed by node address alone, and the condition's rewritten node got
+/// the address of a node dropped with the previous statement: the condition read as INT, a false
+/// E3105 "the IF condition must be BOOL" and the branch compiled as `LD FALSE`. Now each flag
+/// value gives its branch, scan by scan.
+#[test]
+fn a_property_condition_after_a_hoisted_conversion_keeps_its_type() {
+    let src = "\
+FUNCTION_BLOCK Carrier
+VAR
+    s3 : BOOL;
+    dist : INT := 5;
+END_VAR
+PROPERTY P3 : BOOL
+GET
+P3 := s3;
+END_GET
+END_PROPERTY
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK State
+VAR
+    last : LREAL;
+END_VAR
+METHOD SetNum : BOOL
+VAR_INPUT
+    i_id : UINT;
+    i_value : LREAL;
+    i_force : BOOL;
+END_VAR
+last := i_value;
+END_METHOD
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK Observer
+VAR
+    m_p : POINTER TO Carrier;
+    ok : BOOL;
+END_VAR
+METHOD Update : BOOL
+VAR_IN_OUT
+    io : State;
+END_VAR
+io.SetNum(1, INT_TO_LREAL(m_p^.dist), i_force := TRUE);
+IF m_p^.P3 THEN
+    ok := TRUE;
+ELSE
+    ok := FALSE;
+END_IF
+END_METHOD
+END_FUNCTION_BLOCK
+
+PROGRAM Main
+VAR
+    c : Carrier;
+    o : Observer;
+    s : State;
+    n : INT;
+    k : BOOL;
+    v : LREAL;
+END_VAR
+n := n + 1;
+c.s3 := (n MOD 2) = 0;
+o.m_p := ADR(c);
+o.Update(s);
+k := o.ok;
+v := s.last;
+END_PROGRAM
+";
+    let (out, err) = common::run_text("hoisted.st", src, 4, "Main.k,Main.v");
+    assert!(!err.contains("error["), "{err}");
+    assert_eq!(column(&out, "Main.k"), [0.0, 1.0, 0.0, 1.0], "{out}");
+    assert_eq!(column(&out, "Main.v"), [5.0, 5.0, 5.0, 5.0], "{out}");
+}

@@ -649,11 +649,23 @@ impl Env<'_> {
     }
 }
 
-/// Types of subexpressions by node address (see [`Env::expr_cached`]).
-pub type TypeCache = HashMap<usize, Ty>;
+/// Types of subexpressions by node (see [`Env::expr_cached`]).
+pub type TypeCache = HashMap<NodeKey, Ty>;
 
-fn key(e: &Expr) -> usize {
-    e as *const Expr as usize
+/// A node of an expression tree while it lives: its address, with its span and kind. A lowering
+/// drops the expressions it rewrote (a hoisted call's argument, a property read made a getter
+/// call) and allocates others, which may get a freed node's address: with the address alone, a
+/// new node read the type of the old one (round 32, x-PPU: `IF p^.Flag THEN` after a call that
+/// hoisted `INT_TO_LREAL(p^.dist)` took the condition as the INT `p^.dist`, a false E3105, and
+/// its condition for FALSE).
+pub type NodeKey = (usize, Span, std::mem::Discriminant<ExprKind>);
+
+fn key(e: &Expr) -> NodeKey {
+    (
+        e as *const Expr as usize,
+        e.span,
+        std::mem::discriminant(&e.kind),
+    )
 }
 
 /// The type of a generic operation on two values: a typed side wins over a literal.
@@ -663,5 +675,44 @@ pub fn unify(a: Ty, b: Ty) -> Ty {
         (Ty::RealLit, _) | (_, Ty::RealLit) => Ty::RealLit,
         (Ty::IntLit, _) | (_, Ty::IntLit) => Ty::IntLit,
         _ => Ty::Unknown,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::FileId;
+
+    /// A node replaced in place (the same address: a lowering that drops a rewritten
+    /// expression and allocates the next one where it was) is typed as what it now is, not
+    /// from the cache entry of the node that was there (round 32, x-PPU's false E3105).
+    #[test]
+    fn a_node_at_a_reused_address_is_typed_again() {
+        let decls = Declarations::default();
+        let mut vars = HashMap::new();
+        let file = FileId(0);
+        vars.insert("DIST".to_string(), named("INT", Span::new(file, 0, 0)));
+        vars.insert("FLAG".to_string(), named("BOOL", Span::new(file, 0, 0)));
+        let pou = Ident::new("Main", Span::new(file, 0, 4));
+        let env = Env {
+            decls: &decls,
+            vars: &vars,
+            pou_name: &pou,
+            pou_kind: PouKind::Program,
+            pou_ret: None,
+        };
+        let mut diags = diagnostics::Diagnostics::new();
+        let src = "dist        flag";
+        let mut node = crate::st::parse_expression(file, &src[..4], 0, &mut diags).unwrap();
+        let mut cache = TypeCache::new();
+        let shown = |t: Ty| match t {
+            Ty::Known(TypeRef::Named(i)) => i.name.to_ascii_uppercase(),
+            other => format!("{other:?}"),
+        };
+        assert_eq!(shown(env.expr_cached(&node, &mut cache)), "INT");
+        // the same place in memory now holds `flag`
+        node = crate::st::parse_expression(file, &src[12..], 12, &mut diags).unwrap();
+        assert_eq!(shown(env.expr_cached(&node, &mut cache)), "BOOL");
+        assert!(diags.is_empty(), "{diags:?}");
     }
 }

@@ -816,6 +816,8 @@ impl<'d> PouLowering<'d> {
     }
 
     fn stmt(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
+        // (no type cached for a node of another statement: see `infer::NodeKey`)
+        self.types.get_mut().clear();
         if !self.stmt_rewritten(s, out, diags) {
             self.stmt_lowered(s, out, diags);
         }
