@@ -364,3 +364,50 @@ END_PROGRAM
     assert_eq!(column(&out, "Main.k"), [0.0, 1.0, 0.0, 1.0], "{out}");
     assert_eq!(column(&out, "Main.v"), [5.0, 5.0, 5.0, 5.0], "{out}");
 }
+
+/// A TwinCAT `<Transition>` object whose body is an FBD network (x-PPU's `TAbort`: one network
+/// assigning the transition's name; IEC 61131-3 ed. 3 8.3.3 allows a transition condition in LD
+/// or FBD) is read as the ST statement of its network: the chart of `twincat_sfc_run.rs` with
+/// `T_Full` drawn as `GE(nLevel, 50) -> T_Full` runs scan by scan as with the ST condition
+/// `nLevel >= 50`: Fill adds 10 per scan from scan 2, T_Full fires at 50 (scan 7: Fill's exit
+/// action counts, Drain takes 20 per scan). Before: E0321 "the transition `T_Full` is not one
+/// boolean expression", nothing run.
+#[test]
+fn a_transition_object_drawn_in_fbd_is_its_network_condition() {
+    let fixture = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/fixtures/twincat_sfc/fbd_transition/MAIN.TcPOU");
+    let dir = tempfile::tempdir().unwrap();
+    write_in(
+        dir.path(),
+        "stim.csv",
+        "cycle,variable,value\n2,MAIN.bStart,1\n3,MAIN.bStart,0\n",
+    );
+    let (code, out, err) = in_dir(
+        dir.path(),
+        &[
+            "run",
+            fixture.to_str().unwrap(),
+            "--cycles",
+            "12",
+            "--cycle-ms",
+            "10",
+            "--stimulus",
+            "stim.csv",
+            "--trace",
+            "-",
+            "--watch",
+            "MAIN.nLevel,MAIN.nExit",
+        ],
+    );
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(
+        column(&out, "MAIN.nLevel"),
+        [0.0, 0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 30.0, 10.0, -10.0, -10.0, -10.0],
+        "{out}"
+    );
+    assert_eq!(
+        column(&out, "MAIN.nExit"),
+        [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0],
+        "{out}"
+    );
+}

@@ -660,16 +660,34 @@ fn body_of<'e, 'a>(
         )));
     }
     if lang.name() == "SFC" && declares && el.name() == "POU" {
-        // the POU's transition objects, which the chart's transitions may name
+        // the POU's transition objects, which the chart's transitions may name: an ST body, or
+        // an LD/FBD one (x-PPU's `TAbort`, one FBD network assigning the transition's name; IEC
+        // 61131-3 ed. 3 8.3.3 allows a transition condition in LD or FBD) read as its ST
+        // statement when it needs no temporary (else the chart's E0321 says it is no expression)
         let objects: Vec<(String, String)> = el
             .children_named("Transition")
             .map(|t| {
-                let st = t
-                    .child("Implementation")
-                    .and_then(|i| i.child("ST"))
-                    .map(|s| s.text())
-                    .unwrap_or_default();
-                (t.attr("Name").unwrap_or("").trim().to_string(), st)
+                let name = t.attr("Name").unwrap_or("").trim().to_string();
+                let body = t.child("Implementation");
+                let st = match (
+                    body.and_then(|i| i.child("ST")),
+                    body.and_then(|i| i.child("NWL")),
+                ) {
+                    (Some(s), _) => s.text(),
+                    (None, Some(nwl)) => {
+                        match twincat_nwl::lower(file, nwl, &format!("{what}.{name}"), false) {
+                            Ok(b) if b.temps.is_empty() => b
+                                .toks
+                                .iter()
+                                .map(|t| t.text.as_str())
+                                .collect::<Vec<_>>()
+                                .join(" "),
+                            _ => String::new(),
+                        }
+                    }
+                    (None, None) => String::new(),
+                };
+                (name, st)
             })
             .collect();
         return Ok(Some(Body::Graph(
