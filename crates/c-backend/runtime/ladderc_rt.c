@@ -98,11 +98,16 @@ void ladderc_TP##S##_body(ladderc_TP##S *fb) {                                  
     IEC_##T pt = fb->PT < 0 ? 0 : fb->PT;                                                \
     IEC_BOOL edge = (IEC_BOOL)(fb->IN && !fb->in_m);                                     \
     fb->in_m = fb->IN ? 1u : 0u;                                                         \
-    if (!fb->running && edge && pt > 0) {                                                \
+    /* The rising edge sets Q in this call whatever PT is (IEC 61131-3 ed. 3 Table 45's  \
+     * diagram; CODESYS: "Rising edge starts the pulse timer and sets Q to TRUE"); the    \
+     * pulse ends in a later call once ET reaches PT, so PT = T#0s gives a one-scan pulse \
+     * (matiec's TP does the same: OpenPLC/Beremiz projects use it as a pulse former). */ \
+    if (!fb->running && edge) {                                                          \
         fb->running = 1;                                                                 \
         fb->start = ladderc_now;                                                         \
-    }                                                                                    \
-    if (fb->running) {                                                                   \
+        fb->Q = 1;                                                                       \
+        fb->ET = 0;                                                                      \
+    } else if (fb->running) {                                                            \
         IEC_##T et = elapsed_since(fb->start);                                           \
         if (et >= pt) {                                                                  \
             fb->running = 0;                                                             \

@@ -153,7 +153,9 @@ pub(crate) fn body_chart<'e, 'x>(body: &'e Element<'x>) -> Option<&'e Element<'x
 /// the chart's execution order (module header).
 pub(crate) fn read<'x>(ctx: &mut Ctx, cfc: &Element<'x>, pou: &str) -> Graph<'x> {
     let mut g = graph::read(ctx, cfc, pou);
-    // CODESYS numbers from 0; the FBD model counts 0 as "no number"
+    // CODESYS numbers from 0; the FBD model counts 0 as "no number" (`graph::read` has already
+    // raised a chart numbered 0..n with distinct ids; raising every id once more keeps the order,
+    // and covers a chart of one element or with a repeated id)
     for n in &mut g.nodes {
         n.exec_order = n.exec_order.map(|o| o.saturating_add(1));
     }

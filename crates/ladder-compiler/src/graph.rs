@@ -4,7 +4,9 @@
 //! dropped), every wire resolved to a node index (dangling ones reported as E3006), networks (connected
 //! components, connectors joined to their continuations by name) in execution order.
 //! Order (documented in the README): networks by the smallest non-zero `executionOrderId` of their
-//! elements, networks without one after them by the top-most then left-most element position (y, then x);
+//! elements (a body numbered from 0, its ids distinct, counts 0 as the first position:
+//! `numbered_from_zero`), networks without one after them by the top-most then left-most element
+//! position (y, then x);
 //! inside a network, data flow first, ties broken the same way, then by localId.
 //! Invariants: every [`Wire::from`] indexes [`Graph::nodes`]; every node but a power rail belongs to exactly
 //! one network (rails join no rungs and are in none);
@@ -209,7 +211,8 @@ pub struct Node<'x> {
     pub kind: Kind<'x>,
     /// The element's start tag.
     pub span: Span,
-    /// The `executionOrderId` attribute, if given (0 counts as absent for ordering).
+    /// The `executionOrderId` attribute, if given (0 counts as absent for ordering; a body numbered
+    /// from 0 has every id raised by one when read).
     pub exec_order: Option<u32>,
     /// `<position x>`, in the editor's units (rounded toward zero).
     pub x: i64,
@@ -472,6 +475,17 @@ impl<'x> LocalIds<'x> {
     }
 }
 
+/// Whether a body's `executionOrderId`s (`ids`, sorted here) number its elements from 0: at least
+/// two of them, all different, one of them 0. Then 0 is the first position, not "no order": CFC
+/// editors number from 0 (Beckhoff Infosys, TC3 PLC CFC "Command Move to Beginning": the selected
+/// elements get "the lowest numbers starting with 0"; CODESYS CFC likewise) and the TC6 schema's
+/// `executionOrderId` is a plain `xsd:unsignedLong`. Beremiz and the OpenPLC Editor write 0 on every
+/// element (no order chosen): repeated zeros, and a lone 0, stay "no order".
+fn numbered_from_zero(ids: &mut [u32]) -> bool {
+    ids.sort_unstable();
+    ids.len() >= 2 && ids[0] == 0 && ids.windows(2).all(|w| w[0] != w[1])
+}
+
 /// Reads the body's elements. `pou` names the POU in diagnostics.
 pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     // At most one node per child element: no regrowth.
@@ -488,6 +502,8 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
     // another schema, a generator that numbers every rung's right rail alike).
     let mut unsupported: Vec<Unsupported<'_>> = Vec::new();
     let mut reused: Vec<(&str, Span, usize, usize)> = Vec::new();
+    // The `executionOrderId`s of the elements, in document order (see [`numbered_from_zero`]).
+    let mut numbered: Vec<u32> = Vec::new();
     for e in body.children {
         let span = ctx.tag(e);
         if matches!(
@@ -720,6 +736,7 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
         }
         let wired = !input.is_empty();
         let exec_order = exec_order.and_then(|v| trim(v).parse().ok());
+        numbered.extend(exec_order);
         let (x, y) = (coord(x), coord(y));
         let me = nodes.len();
         nodes.push(Node {
@@ -782,6 +799,11 @@ pub fn read<'x>(ctx: &mut Ctx, body: &Element<'x>, pou: &str) -> Graph<'x> {
                 has_input: wired,
                 wired,
             });
+        }
+    }
+    if numbered_from_zero(&mut numbered) {
+        for n in &mut nodes {
+            n.exec_order = n.exec_order.map(|o| o.saturating_add(1));
         }
     }
     for (name, (span, local_id), n) in unsupported {

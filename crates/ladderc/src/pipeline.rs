@@ -374,11 +374,10 @@ impl Session {
         let globals_before = il_frontend::st::set_project_globals(globals);
         // several PLCopen XML files (CODESYS exports one object per file), or XML beside text
         // inputs (a TwinCAT project's `.TcDUT` types of an imported PLCopen POU): compiled once
-        // all are read, each knowing the POUs and data types of the others
-        let defer_xml = paths.len() > 1
-            && paths
-                .iter()
-                .any(|p| p.extension().is_some_and(|x| x.eq_ignore_ascii_case("xml")));
+        // all are read, each knowing the POUs and data types of the others. Every input read as
+        // PLCopen XML counts, whatever its name: `.xml`, a Beremiz folder, or a file recognised
+        // from its content (W0302: RuSTy's `.cfc` charts, a `.plcopen` export)
+        let defer_xml = paths.len() > 1;
         let mut deferred_xml: Vec<(usize, diagnostics::FileId, Option<PathBuf>)> = Vec::new();
         for p in &paths {
             // a Beremiz project folder (or its plc.xml): plc.xml, then its confnodes' globals

@@ -200,7 +200,7 @@ pub fn generate(
     };
     g.check_embedded(opts);
     g.check_methods();
-    g.check_output_overlaps();
+    g.check_address_overlaps();
 
     let mut h = String::new();
     // Room for the whole C text from the start: the text is not regrown (and copied) while it is

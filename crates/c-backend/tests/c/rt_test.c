@@ -118,6 +118,13 @@ static void timers(void) {
     at(30); ladderc_TP_body(&tp); CHECK(tp.Q == 0 && tp.ET == 20000000); /* IN still TRUE: ET holds */
     at(40); tp.IN = 0; ladderc_TP_body(&tp); CHECK(tp.Q == 0 && tp.ET == 0);
     at(50); tp.IN = 1; ladderc_TP_body(&tp); CHECK(tp.Q == 1 && tp.ET == 0);
+    /* PT 0: the rising edge still gives Q for the call that sees it, cleared by the next call. */
+    ladderc_TP_init(&tp);
+    tp.PT = 0;
+    at(0); tp.IN = 1; ladderc_TP_body(&tp); CHECK(tp.Q == 1 && tp.ET == 0);
+    at(10); ladderc_TP_body(&tp); CHECK(tp.Q == 0 && tp.ET == 0);
+    at(20); tp.IN = 0; ladderc_TP_body(&tp); CHECK(tp.Q == 0 && tp.ET == 0);
+    at(30); tp.IN = 1; ladderc_TP_body(&tp); CHECK(tp.Q == 1 && tp.ET == 0);
 
     ladderc_TON_init(&ton);
     ton.PT = 0;
