@@ -1,0 +1,174 @@
+//! Round 32 of issue #13: TwinCAT language points found in Beckhoff's own sample repositories,
+//! end to end.
+//! - `FOR e := E.a + 1 TO E.b - 1` over an enumeration without `{attribute 'strict'}` counts
+//!   through its numbers, as `e := E.a + 1` already did (Beckhoff Infosys, "Attribute 'strict'":
+//!   only under the attribute is arithmetic on an enumeration variable a compile error); a strict
+//!   one stays E3100 (before: E3100 for both; Boot-folder-swap-from-PLC);
+//! - `R_Edge : R_TRIG;` in a `.TcPOU` is a variable (W1451): TwinCAT's "Keywords" list and its
+//!   future-reserved list (Compiler Error C0543) have no R_EDGE / F_EDGE (before: E1031 and the
+//!   body not compiled; TF6350_SMS_SMTP).
+
+mod common;
+use common::{check_text, column, run_stimulated, run_text};
+
+/// An enumeration without `{attribute 'strict'}` as a FOR counter (Boot-folder-swap-from-PLC's
+/// `FOR eVariantIndex := E_Variant.Unknown + 1 TO E_Variant.End - 1 DO`): the loop runs over the
+/// values 1 and 2 (`n` = 2, `sum` = 1 + 2, the elements 1 and 2 of an array indexed by the
+/// enumeration set, 0 and 3 not), and the counter ends one past the limit (3), as an integer
+/// counter does. One W1439 for the POU. Before: E3100 "the FOR control variable `e` must be an
+/// integer variable, but it is E_Variant", though `e := E_Variant.Unknown + 1;` was accepted.
+#[test]
+fn for_counter_over_a_non_strict_enumeration_runs_through_its_numbers() {
+    let src = "TYPE E_Variant : (Unknown := 0, RevA := 1, RevB := 2, Last := 3); END_TYPE
+PROGRAM main
+VAR
+  e : E_Variant;
+  n : INT;
+  sum : INT;
+  after : E_Variant;
+  seen : ARRAY[E_Variant.Unknown..E_Variant.Last] OF BOOL;
+END_VAR
+n := 0;
+sum := 0;
+FOR e := E_Variant.Unknown + 1 TO E_Variant.Last - 1 DO
+  seen[e] := TRUE;
+  n := n + 1;
+  sum := sum + e;
+END_FOR
+after := e;
+END_PROGRAM
+";
+    let (code, lines) = check_text("enum_for.st", src);
+    assert_eq!(code, Some(0), "{lines:?}");
+    assert!(lines.iter().all(|l| !l.contains("error[")), "{lines:?}");
+    let (trace, _) = run_text(
+        "enum_for.st",
+        src,
+        2,
+        "main.n,main.sum,main.after,main.seen[0],main.seen[1],main.seen[2],main.seen[3]",
+    );
+    for (name, want) in [
+        ("main.n", 2.0),
+        ("main.sum", 3.0),
+        ("main.after", 3.0),
+        ("main.seen[0]", 0.0),
+        ("main.seen[1]", 1.0),
+        ("main.seen[2]", 1.0),
+        ("main.seen[3]", 0.0),
+    ] {
+        assert_eq!(column(&trace, name), [want, want], "{name}: {trace}");
+    }
+}
+
+/// Under `{attribute 'strict'}` the enumeration keeps IEC 61131-3's strong typing (Infosys,
+/// "Attribute 'strict'": arithmetic on its variables is a compile error): one E3100 at the
+/// counter, as before.
+#[test]
+fn for_counter_over_a_strict_enumeration_stays_e3100() {
+    let src = "{attribute 'strict'}
+TYPE E_Strict : (sA, sB, sC); END_TYPE
+PROGRAM main
+VAR
+  s : E_Strict;
+  n : INT;
+END_VAR
+FOR s := E_Strict.sA TO E_Strict.sC DO
+  n := n + 1;
+END_FOR
+END_PROGRAM
+";
+    let (code, lines) = check_text("strict_for.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    let errors: Vec<_> = lines.iter().filter(|l| l.contains("error[")).collect();
+    assert_eq!(errors.len(), 1, "{lines:?}");
+    assert!(
+        errors[0].starts_with("strict_for.st:8:5: error[E3100]: the FOR control variable `s` must be an integer variable, but it is E_Strict"),
+        "{lines:?}"
+    );
+}
+
+/// TF6350_SMS_SMTP's edge detector named `R_Edge` in a TwinCAT object.
+const R_EDGE_NAMED: &str = "<?xml version=\"1.0\" encoding=\"utf-8\"?>
+<TcPlcObject Version=\"1.1.0.1\">
+  <POU Name=\"MAIN\" Id=\"{00000000-0000-4000-8000-000000000032}\" SpecialFunc=\"None\">
+    <Declaration><![CDATA[PROGRAM MAIN
+VAR
+\tbIn : BOOL;
+\tR_Edge : R_TRIG;
+\tF_Edge : F_TRIG;
+\tnRising : INT;
+\tnFalling : INT;
+END_VAR
+]]></Declaration>
+    <Implementation>
+      <ST><![CDATA[R_Edge(CLK := bIn);
+F_Edge(CLK := bIn);
+IF R_Edge.Q THEN
+\tnRising := nRising + 1;
+END_IF
+IF F_Edge.Q THEN
+\tnFalling := nFalling + 1;
+END_IF]]></ST>
+    </Implementation>
+  </POU>
+</TcPlcObject>
+";
+
+/// `R_Edge : R_TRIG;` and `F_Edge : F_TRIG;` in a `.TcPOU` are variables: one W1451 at each
+/// declaration, no error, and the instances count the edges of `bIn` (TRUE at cycles 1 and 5,
+/// FALSE at 3: rising edges at 1 and 5; F_TRIG fires at the first scan, its memory starting
+/// FALSE as IEC 61131-3 declares it, and at 3). Before: E1031 "`R_Edge` is
+/// reserved in IEC 61131-3 (a keyword)" and the POU's body was not compiled.
+#[test]
+fn twincat_variable_named_r_edge_counts_edges() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("MAIN.TcPOU");
+    std::fs::write(&file, R_EDGE_NAMED).unwrap();
+    let out = common::ladderc()
+        .args(["--message-format", "short", "check"])
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0));
+    let lines = common::diagnostic_heads(&out.stderr, dir.path(), true);
+    assert_eq!(
+        lines,
+        [
+            "MAIN.TcPOU:7:2: warning[W1451]: `R_Edge` is an IEC 61131-3 edge qualifier (`x : BOOL R_EDGE;`): accepted as a variable name, as TwinCAT does",
+            "MAIN.TcPOU:8:2: warning[W1451]: `F_Edge` is an IEC 61131-3 edge qualifier (`x : BOOL R_EDGE;`): accepted as a variable name, as TwinCAT does",
+        ],
+        "{lines:?}"
+    );
+    let (trace, _) = run_stimulated(
+        &file,
+        7,
+        "1,MAIN.bIn,TRUE\n3,MAIN.bIn,FALSE\n5,MAIN.bIn,TRUE\n",
+        "MAIN.nRising,MAIN.nFalling",
+    );
+    assert_eq!(
+        column(&trace, "MAIN.nRising"),
+        [0.0, 1.0, 1.0, 1.0, 1.0, 2.0, 2.0],
+        "{trace}"
+    );
+    assert_eq!(
+        column(&trace, "MAIN.nFalling"),
+        [1.0, 1.0, 1.0, 2.0, 2.0, 2.0, 2.0],
+        "{trace}"
+    );
+}
+
+/// In an IEC 61131-3 text (`.st`) the same name stays one E1031 at the declaration: ed. 3
+/// reserves R_EDGE as the qualifier of an edge-triggered input.
+#[test]
+fn st_variable_named_r_edge_stays_one_e1031() {
+    let (code, lines) = check_text(
+        "edge.st",
+        "PROGRAM main\nVAR\n  R_Edge : R_TRIG;\n  b : BOOL;\nEND_VAR\nR_Edge(CLK := b);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("edge.st:3:3: error[E1031]: `R_Edge` is reserved in IEC 61131-3"),
+        "{lines:?}"
+    );
+}
