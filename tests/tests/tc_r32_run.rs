@@ -6,7 +6,10 @@
 //!   one stays E3100 (before: E3100 for both; Boot-folder-swap-from-PLC);
 //! - `R_Edge : R_TRIG;` in a `.TcPOU` is a variable (W1451): TwinCAT's "Keywords" list and its
 //!   future-reserved list (Compiler Error C0543) have no R_EDGE / F_EDGE (before: E1031 and the
-//!   body not compiled; TF6350_SMS_SMTP).
+//!   body not compiled; TF6350_SMS_SMTP);
+//! - Tc2_Standard's WSTRING functions (`WMID`, `WLEN`, `WCONCAT` ...; Beckhoff Infosys,
+//!   Tc2_Standard, "WMID": `FUNCTION WMID : WSTRING(255)` with STR, LEN, POS) are the string
+//!   functions on WSTRING (before: E1019 unknown function; TF6100_Samples).
 
 mod common;
 use common::{check_text, column, run_stimulated, run_text};
@@ -169,6 +172,62 @@ fn st_variable_named_r_edge_stays_one_e1031() {
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
         lines[0].starts_with("edge.st:3:3: error[E1031]: `R_Edge` is reserved in IEC 61131-3"),
+        "{lines:?}"
+    );
+}
+
+/// Tc2_Standard's nine WSTRING functions, formal (with Tc2_Standard's input names) and
+/// positional, give the values of their STRING namesakes on WSTRING; a position out of range is
+/// the run-time check's report, as for MID. Before: E1019 "unknown function `WMID`" (likewise
+/// `WLEN`, `WCONCAT`).
+#[test]
+fn tc2_standard_wstring_functions_run() {
+    let src = r#"PROGRAM main
+VAR
+  w : WSTRING := "Hello World";
+  l, m, c, r, i, d, x, beyond : WSTRING;
+  n, p : INT;
+END_VAR
+l := WLEFT(STR := w, SIZE := 5);
+m := WMID(STR := w, LEN := 5, POS := 7);
+n := WLEN(w);
+c := WCONCAT(l, m);
+r := WRIGHT(w, 3);
+i := WINSERT(STR1 := l, STR2 := "__", POS := 2);
+d := WDELETE(w, 6, 1);
+x := WREPLACE(w, "XY", 2, 1);
+p := WFIND(w, "World");
+beyond := WMID(w, 5, 20);
+END_PROGRAM
+"#;
+    let (trace, stderr) = run_text(
+        "wstring.st",
+        src,
+        1,
+        "main.l,main.m,main.n,main.c,main.r,main.i,main.d,main.x,main.p,main.beyond",
+    );
+    assert_eq!(
+        trace.lines().nth(1),
+        Some(r#"0,0,"Hello","World",11,"HelloWorld","rld","He__llo","World","XYllo World",7,"""#),
+        "{trace}"
+    );
+    assert!(
+        stderr.contains("string length or position out of range"),
+        "{stderr}"
+    );
+}
+
+/// Tc2_Standard's WLEN takes a WSTRING: a STRING given to it is one E1410 at the call.
+#[test]
+fn tc2_standard_wlen_of_a_string_is_e1410() {
+    let (code, lines) = check_text(
+        "wlen.st",
+        "PROGRAM main\nVAR\n  s : STRING := 'abc';\n  n : INT;\nEND_VAR\nn := WLEN(s);\nEND_PROGRAM\n",
+    );
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with("wlen.st:6:6: error[E1410]: `WLEN` takes WSTRING inputs, not STRING"),
         "{lines:?}"
     );
 }
