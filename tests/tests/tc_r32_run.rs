@@ -9,7 +9,11 @@
 //!   body not compiled; TF6350_SMS_SMTP);
 //! - Tc2_Standard's WSTRING functions (`WMID`, `WLEN`, `WCONCAT` ...; Beckhoff Infosys,
 //!   Tc2_Standard, "WMID": `FUNCTION WMID : WSTRING(255)` with STR, LEN, POS) are the string
-//!   functions on WSTRING (before: E1019 unknown function; TF6100_Samples).
+//!   functions on WSTRING (before: E1019 unknown function; TF6100_Samples);
+//! - a property of the interface a property returns is written through it
+//!   (`fut.executor.keepJob := TRUE;`): an interface value refers to an instance (Infosys,
+//!   "Interface"), so the write calls that instance's Set accessor (before: E0338 "the
+//!   property's value is a copy"; PLC_JobManagementFramework).
 
 mod common;
 use common::{check_text, column, run_stimulated, run_text};
@@ -230,4 +234,75 @@ fn tc2_standard_wlen_of_a_string_is_e1410() {
         lines[0].starts_with("wlen.st:6:6: error[E1410]: `WLEN` takes WSTRING inputs, not STRING"),
         "{lines:?}"
     );
+}
+
+/// PLC_JobManagementFramework's pattern: `PROPERTY executor : I_Job` of a future, and
+/// `keepJob` a PROPERTY of the interface I_Job.
+const INTERFACE_PROPERTY: &str = "INTERFACE I_Job
+PROPERTY keepJob : BOOL
+GET END_GET
+SET END_SET
+END_PROPERTY
+END_INTERFACE
+
+FUNCTION_BLOCK FB_Job IMPLEMENTS I_Job
+VAR
+  _keep : BOOL;
+END_VAR
+PROPERTY keepJob : BOOL
+GET
+  keepJob := _keep;
+END_GET
+SET
+  _keep := keepJob;
+END_SET
+END_PROPERTY
+END_FUNCTION_BLOCK
+
+FUNCTION_BLOCK FB_Future
+VAR
+  _job : I_Job;
+END_VAR
+PROPERTY executor : I_Job
+GET
+  executor := _job;
+END_GET
+SET
+  _job := executor;
+END_SET
+END_PROPERTY
+END_FUNCTION_BLOCK
+
+PROGRAM main
+VAR
+  job, other : FB_Job;
+  fut, unbound : FB_Future;
+  seen, seenOther : BOOL;
+  cycle : INT;
+END_VAR
+fut.executor := job;
+fut.executor.keepJob := cycle < 2;
+seen := job.keepJob;
+unbound.executor.keepJob := TRUE;
+seenOther := other.keepJob;
+cycle := cycle + 1;
+END_PROGRAM
+";
+
+/// `fut.executor.keepJob := cycle < 2;` reaches the job the future's interface refers to: its
+/// keepJob is TRUE in the first two scans and FALSE after (written through, each scan); another
+/// job is untouched, and a future whose interface was never assigned drops the write (the
+/// run-time check's NULL report, no crash under the sanitizers). Before: E0338 "a component of
+/// property `executor` cannot be written: the property's value is a copy".
+#[test]
+fn property_of_an_interface_a_property_returns_is_written_through() {
+    let (trace, stderr) = run_text(
+        "future.st",
+        INTERFACE_PROPERTY,
+        4,
+        "main.seen,main.seenOther",
+    );
+    assert_eq!(column(&trace, "main.seen"), [1.0, 1.0, 0.0, 0.0], "{trace}");
+    assert_eq!(column(&trace, "main.seenOther"), [0.0; 4], "{trace}");
+    assert!(stderr.contains("unassigned interface"), "{stderr}");
 }
