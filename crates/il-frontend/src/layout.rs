@@ -692,6 +692,16 @@ impl<'s> Layout<'s> {
                     {
                         Tok::Word(Word::Ident)
                     }
+                    // `R_Edge : R_TRIG;`: an edge qualifier stands only after an input's type,
+                    // so at the start of a declaration, before `:`, it is the variable's name
+                    // (accepted in a TwinCAT object, W1451; E1031 elsewhere: sema)
+                    Word::REdge | Word::FEdge
+                        if self.decl_start
+                            && matches!(top, Some(Frame::Var(..)))
+                            && self.colon_follows(e) =>
+                    {
+                        Tok::Word(Word::Ident)
+                    }
                     w => Tok::Word(w),
                 }
             }

@@ -992,6 +992,22 @@ impl Analyzer<'_> {
                         d.name.name
                     ));
                 }
+                let edge_word = twincat_edge_word(&d.name.name, d.name.span.file);
+                if edge_word && !self.declaring_fields {
+                    self.warning(
+                        code::W1451,
+                        d.name.span,
+                        format!(
+                            "`{}` is an IEC 61131-3 edge qualifier (`x : BOOL R_EDGE;`): accepted as a variable name, as TwinCAT does",
+                            d.name.name
+                        ),
+                    )
+                    .label("edge qualifier")
+                    .hint(format!(
+                        "for portable IEC 61131-3 code rename the variable, for example `fb{}`",
+                        d.name.name
+                    ));
+                }
                 // a structure's field named with a keyword, an elementary type or a standard
                 // block (`Continue`, `Type`, `byte`, `tp`: B&R's and CODESYS's libraries) is read
                 // only after `.` (`s.tp`), where none of them can stand: accepted
@@ -1026,6 +1042,7 @@ impl Analyzer<'_> {
                         && !keyword_parameter
                         && twincat_word.is_none()
                         && !twincat_block
+                        && !edge_word
                 }) {
                     // reported once, at the declaration; the variable is kept so that its uses
                     // give no further errors
@@ -2096,6 +2113,17 @@ fn twincat_configuration_word(name: &str, file: diagnostics::FileId) -> Option<&
     .find(|(k, _)| k.eq_ignore_ascii_case(name))
     .filter(|_| super::is_twincat_file(file))
     .map(|(_, place)| place)
+}
+
+/// `R_EDGE` and `F_EDGE` naming a variable of a TwinCAT 3 object (`R_Edge : R_TRIG;`, real
+/// projects' edge detectors): IEC 61131-3 (ed. 3) reserves them as input qualifiers, but Beckhoff's
+/// list of the keywords that cannot name a variable (Infosys, TwinCAT 3 PLC, "Keywords") and its
+/// list of names reserved for the future (Compiler Error C0543) have neither, so it is accepted
+/// there with W1451 (elsewhere, IEC 61131-3 text, it stays E1031). In a TwinCAT declaration the
+/// qualifier stands only after a BOOL input's type, never where a variable's name does.
+fn twincat_edge_word(name: &str, file: diagnostics::FileId) -> bool {
+    (name.eq_ignore_ascii_case("R_EDGE") || name.eq_ignore_ascii_case("F_EDGE"))
+        && super::is_twincat_file(file)
 }
 
 /// What [`reserved_name`] says of a standard function block's name.

@@ -472,8 +472,17 @@ pub fn function(name: &str) -> Option<&'static StdFunction> {
 /// and CODESYS read): `ADD_INT` is ADD with its generic type T fixed to INT, `MUX_INT_DINT` is MUX with
 /// K : INT and T : DINT (`K` is only checked to be ANY_INT). The function and the type of T; `None`
 /// when the function has no generic T or the type is not of its class.
+///
+/// TwinCAT's Tc2_Standard names its WSTRING string functions `WLEN`, `WLEFT`, `WRIGHT`, `WMID`,
+/// `WCONCAT`, `WINSERT`, `WDELETE`, `WREPLACE`, `WFIND` (Beckhoff Infosys, Tc2_Standard, "WMID":
+/// `FUNCTION WMID : WSTRING(255)`, inputs `STR`, `LEN`, `POS`, as MID's): each is its string
+/// function with T fixed to WSTRING, [`tc2_wstring_function`].
 pub fn typed_name(name: &str) -> Option<(&'static StdFunction, Type)> {
     let up = name.to_ascii_uppercase();
+    if let Some(base) = tc2_wstring_function(&up) {
+        let f = FUNCTIONS.iter().find(|f| f.name == base)?;
+        return Some((f, conv_type("WSTRING")?));
+    }
     let (base, ty) = up.split_once('_')?;
     let f = FUNCTIONS.iter().find(|f| f.name == base)?;
     let ty = if f.name == "MUX" {
@@ -489,6 +498,16 @@ pub fn typed_name(name: &str) -> Option<(&'static StdFunction, Type)> {
         _ => None,
     })?;
     class.contains(&t).then_some((f, t))
+}
+
+/// The string function a Tc2_Standard WSTRING function (`WMID`, upper case) is, with T fixed to
+/// WSTRING ([`typed_name`]).
+pub fn tc2_wstring_function(up: &str) -> Option<&'static str> {
+    const STRING_FUNCTIONS: [&str; 9] = [
+        "LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND",
+    ];
+    let rest = up.strip_prefix('W')?;
+    STRING_FUNCTIONS.into_iter().find(|f| *f == rest)
 }
 
 impl StdFunction {

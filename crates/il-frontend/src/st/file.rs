@@ -3021,8 +3021,9 @@ pub fn compile_pending(
                 let keyword_var = p.var_blocks.iter().flat_map(|b| b.vars.iter()).any(|v| {
                     crate::sema::reserved_name(&v.name.name) == Some("a keyword")
                         && !keyword_parameters.contains(&(v.name.span.file, v.name.span.start))
-                            // (no ST keyword: the body reads them as names; W1418 in TwinCAT)
-                            && !["CONFIGURATION", "RESOURCE"]
+                            // (no ST keyword: the body reads them as names; W1418 / W1451 in
+                            // TwinCAT)
+                            && !["CONFIGURATION", "RESOURCE", "R_EDGE", "F_EDGE"]
                                 .iter()
                                 .any(|k| v.name.name.eq_ignore_ascii_case(k))
                 });

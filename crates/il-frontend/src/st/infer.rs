@@ -83,6 +83,22 @@ impl Env<'_> {
         }
     }
 
+    /// Whether `t` is an enumeration declared without `{attribute 'strict'}`: CODESYS and TwinCAT
+    /// count with it as with its integer (Beckhoff Infosys, "Attribute 'strict'": only under the
+    /// attribute is arithmetic on an enumeration variable a compile error).
+    pub fn loose_enum(&self, t: &TypeRef) -> bool {
+        match self.resolve(t) {
+            TypeRef::Named(n) => {
+                !self.decls.strict_enums.contains(&n.key())
+                    && self
+                        .decls
+                        .type_decl(&n.name)
+                        .is_some_and(|d| matches!(d.def, TypeDef::Enum { .. }))
+            }
+            _ => false,
+        }
+    }
+
     /// The type an untyped integer literal `lit` takes beside an operand of type `ty` (the other
     /// operand of an arithmetic or bit operation): `ty` when the literal fits it, else the smallest
     /// integer (bit string) type that `ty` implicitly widens to and that holds the literal (IEC

@@ -1480,7 +1480,9 @@ impl<'d> PouLowering<'d> {
                             | crate::sema::model::Elementary::Lword
                     )
             });
-            if !int {
+            // an enumeration without {attribute 'strict'} counts as its integer (CODESYS,
+            // TwinCAT; `FOR e := E.a TO E.b`), as `e := E.a + 1` does in sema's loose_enum
+            if !int && !env.loose_enum(t) {
                 let text = match element {
                     Some(p) => for_control::place_text(p),
                     None => control.name.clone(),

@@ -20,7 +20,8 @@
 //! Set or a read of one without Get (E0337), a property passed to a VAR_IN_OUT or an output, or a
 //! component of it written (E0338), unless the property is a REFERENCE TO (or the component is
 //! reached through `P^`): then the component is a variable, written or bound to an output or a
-//! VAR_IN_OUT after the getter's call. A property read in an ELSIF or WHILE condition is evaluated
+//! VAR_IN_OUT after the getter's call; likewise a property of an INTERFACE type, whose value
+//! refers to an instance (`fut.executor.keepJob := TRUE;` sets keepJob of that instance). A property read in an ELSIF or WHILE condition is evaluated
 //! where the condition is (the IF is split at that ELSIF, the loop tests it after calling the
 //! getter); one in an UNTIL condition is a getter call in place, run before each test as a method
 //! call there is (`super::lower::method_flow`; E0108 before issue #13's Session 36).
@@ -444,14 +445,16 @@ impl Rewriter<'_, '_> {
                     .and_then(|t| self.env.member(&t, &result))
             }
         };
-        ty.is_some_and(|t| {
-            matches!(
-                self.env.resolve(&t),
-                TypeRef::Ref {
-                    kind: crate::ast::RefKind::Reference,
-                    ..
-                }
-            )
+        ty.is_some_and(|t| match self.env.resolve(&t) {
+            TypeRef::Ref {
+                kind: crate::ast::RefKind::Reference,
+                ..
+            } => true,
+            // an interface value refers to an instance (Beckhoff Infosys, TwinCAT 3 PLC,
+            // "Interface"; CODESYS likewise): `fut.executor.keepJob := TRUE;` with `PROPERTY
+            // executor : I_Job` calls keepJob's Set accessor of the instance it refers to
+            TypeRef::Named(n) => self.env.decls.interfaces.contains_key(&n.key()),
+            _ => false,
         })
     }
 

@@ -92,6 +92,10 @@ pub struct Declarations {
     /// (upper case): the body's E0354 ([`super::lower`]'s `void_result`) says what is wrong, so a
     /// call that uses their value reports nothing more.
     pub assigns_missing_result: std::collections::HashSet<String>,
+    /// The enumerations declared under `{attribute 'strict'}` (upper case): IEC's strong typing.
+    /// The others count as their integer where CODESYS and TwinCAT let them
+    /// ([`crate::sema`]'s `loose_enum`; a FOR counter, [`super::lower`]).
+    pub strict_enums: std::collections::HashSet<String>,
     /// The files where E0351 (`__NEW` / `__DELETE`) was reported: once per file (`lower::dynamic_memory`).
     pub(super) heap_reported:
         std::sync::Arc<std::sync::Mutex<std::collections::HashSet<crate::FileId>>>,
@@ -232,6 +236,10 @@ impl Declarations {
                 LibraryElement::Action(_) => {}
             }
         }
+        d.strict_enums = units
+            .iter()
+            .flat_map(|u| u.strict_types.iter().map(|n| n.key()))
+            .collect();
         d
     }
     /// Registers a data type (replacing one of the same name).
