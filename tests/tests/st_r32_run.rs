@@ -241,7 +241,7 @@ END_PROGRAM
     assert_eq!(column(&out, "Counter_P.n"), [1.0, 2.0, 3.0]);
 }
 
-/// 4CONTROL's block of constants `CONST ... END_CONST` (after `#IMPORT`, written in capitals) is
+/// 4CONTROL's block of constants `CONST ... END_CONST` (after `#import`) is
 /// one E1095 at `CONST` for the file, which is not compiled: one error for the dialect, not one
 /// E0106 per declaration read as a statement (which the file gave once `#import` was read).
 #[test]
@@ -249,7 +249,7 @@ fn four_control_const_block_is_one_error() {
     let (code, lines) = check_text(
         "check_p.st",
         "PROGRAM Check_P
-#IMPORT \"Resource1.gvl\"
+#import \"Resource1.gvl\"
 CONST
     this : INT := 25;
     cases : INT := 5;

@@ -52,12 +52,6 @@ pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Opti
             .find(|c: char| !c.is_ascii_alphabetic())
             .unwrap_or(rest.len());
         let word = &rest[..end];
-        // (4CONTROL's `#import` is case-insensitive as its ST is: `#IMPORT` in a `.res` file)
-        let word = if word.eq_ignore_ascii_case("import") {
-            "import"
-        } else {
-            word
-        };
         DIRECTIVES
             .contains(&word)
             .then(|| (lead, word, rest[end..].trim()))
