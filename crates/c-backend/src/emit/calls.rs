@@ -644,6 +644,24 @@ impl Gen<'_> {
                                 after_call.push(cut);
                             }
                         }
+                        // a located variable of an elementary type (`counter AT %QW0 : UINT`),
+                        // or a bit of one (`x.3`): a variable (IEC 61131-3 ed. 3, 6.5.5) a
+                        // VAR_IN_OUT takes (6.6.1.2.2); its value copied in, the function's
+                        // writes copied back after the call (the process image has no C
+                        // address of the variable's type; before round 32: E2005)
+                        Some(place @ (Place::Loc { .. } | Place::Part { .. }))
+                            if v.ty.elementary().is_some() && place.ty().elementary().is_some() =>
+                        {
+                            let t = b.temp();
+                            let Some(decl) = ctypes::declare(self.model, &v.ty, &t) else {
+                                continue;
+                            };
+                            let value = self.read_owned(place.clone(), &v.ty);
+                            b.line_fmt(format_args!("{decl} = {value};"));
+                            call_args.push(cfmt!("&{t}"));
+                            let back = convert(&t, &v.ty, place.ty());
+                            after_call.push(self.store(&place, &back));
+                        }
                         _ => {
                             self.unsupported(span, "a missing or located IN_OUT argument");
                             b.indent -= 1;
@@ -950,6 +968,18 @@ impl Gen<'_> {
                     return None;
                 }
                 let e = e?;
+                // a BOOL, the bit string of one bit (IEC 61131-3 ed. 3 Table 24: IN is ANY_BIT,
+                // BOOL among them, 6.4.2): a rotation by any N gives IN back; a shift by N >= 1
+                // moves the bit out, FALSE; N <= 0 leaves IN, as for the wider strings (the
+                // runtime's shifts; before round 32: E2005)
+                if e == E::Bool {
+                    let (v, n) = (&vals[0], &vals[1]);
+                    return Some(if matches!(name, "ROL" | "ROR") {
+                        cfmt!("((IEC_BOOL)((void)({n}), ({v})))")
+                    } else {
+                        cfmt!("((IEC_BOOL)((int64_t)({n}) >= 1 ? 0 : ({v})))")
+                    });
+                }
                 // an integer (CODESYS, TwinCAT; W1438) shifts its bit pattern of the same width,
                 // zero fill: a signed value goes through its unsigned bits (no C shift of a
                 // negative value) and back (two's complement)

@@ -21,6 +21,12 @@
 //! declared once in each branch (a variant's value) is declared once. Defines set by a project
 //! variant (`.tsproj`) are not read: `defined (X)` of a name that neither the text nor the
 //! project's properties define is FALSE, with the W1419 note saying so.
+//!
+//! SIMATIC AX writes the same sections `{::ifdef X}` ... `{::elseif Y}` ... `{::else}` ...
+//! `{::endif}` (Siemens' ae-demo-rack sample), each condition a symbol the build defines (listed in
+//! its `apax.yml`, which ladderc does not read): read as `defined (X)`, so with no define the
+//! `{::else}` branch, or none, is compiled (round 32; before, every branch was compiled and each
+//! pragma was W0300).
 
 use super::lexer::Problem;
 use crate::{FileId, Span};
@@ -58,12 +64,20 @@ impl Drop for ProjectDefines {
 
 /// What a pragma's text asks, when it is a conditional-compilation directive.
 enum Directive<'a> {
-    If(&'a str),
-    Elsif(&'a str),
+    If(Cond<'a>),
+    Elsif(Cond<'a>),
     Else,
     EndIf,
     Define(&'a str),
     Undefine(&'a str),
+}
+
+/// The condition of an `{IF}` or `{ELSIF}`.
+enum Cond<'a> {
+    /// A CODESYS/TwinCAT expression (`defined (X) AND NOT defined (Y)`).
+    Expr(&'a str),
+    /// SIMATIC AX's `{::ifdef X}` / `{::elseif X}`: whether the symbol X is defined.
+    Defined(&'a str),
 }
 
 /// Reads the directive of a pragma's full text (`{IF defined (X)}`), `None` for other pragmas.
@@ -71,6 +85,26 @@ fn directive(text: &str) -> Option<Directive<'_>> {
     let inner = text.strip_prefix('{')?.strip_suffix('}')?;
     if inner.starts_with('{') {
         return None; // `{{ C code }}`
+    }
+    // SIMATIC AX (Siemens' ae-demo-rack sample): `{::ifdef SYMBOL}` ... `{::elseif SYMBOL}` ...
+    // `{::else}` ... `{::endif}`, each condition a preprocessor symbol the build defines (its
+    // `apax.yml` lists them, not read): defined or not, as `defined (SYMBOL)`
+    if let Some(ax) = inner.trim_start().strip_prefix("::") {
+        let ax = ax.trim();
+        let end = ax
+            .find(|c: char| !c.is_ascii_alphabetic())
+            .unwrap_or(ax.len());
+        let (word, rest) = ax.split_at(end);
+        let rest = rest.trim();
+        let symbol =
+            !rest.is_empty() && rest.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        return Some(match word.to_ascii_lowercase().as_str() {
+            "ifdef" if symbol => Directive::If(Cond::Defined(rest)),
+            "elseif" if symbol => Directive::Elsif(Cond::Defined(rest)),
+            "else" if rest.is_empty() => Directive::Else,
+            "endif" if rest.is_empty() => Directive::EndIf,
+            _ => return None,
+        });
     }
     let inner = inner.trim();
     let word_end = inner
@@ -80,8 +114,8 @@ fn directive(text: &str) -> Option<Directive<'_>> {
     let rest = rest.trim();
     let word = word.to_ascii_uppercase();
     Some(match word.as_str() {
-        "IF" => Directive::If(rest),
-        "ELSIF" => Directive::Elsif(rest),
+        "IF" => Directive::If(Cond::Expr(rest)),
+        "ELSIF" => Directive::Elsif(Cond::Expr(rest)),
         "ELSE" if rest.is_empty() => Directive::Else,
         "END_IF" if rest.is_empty() => Directive::EndIf,
         "DEFINE" => Directive::Define(rest),
@@ -245,7 +279,11 @@ impl Reader {
 
     /// The value of the condition `cond` of the pragma at `at`; `None` (after E1037) when it
     /// cannot be evaluated.
-    fn condition(&mut self, cond: &str, at: &Range<usize>) -> Option<bool> {
+    fn condition(&mut self, cond: Cond<'_>, at: &Range<usize>) -> Option<bool> {
+        let cond = match cond {
+            Cond::Expr(e) => e,
+            Cond::Defined(name) => return Some(self.defined_symbol(name, at)),
+        };
         let toks = cond_tokens(cond);
         self.current = at.clone();
         let mut p = CondParser {
@@ -276,6 +314,26 @@ impl Reader {
                 None
             }
         }
+    }
+
+    /// SIMATIC AX's `{::ifdef name}`: W1419 the first time a name nothing defined is asked for.
+    fn defined_symbol(&mut self, name: &str, at: &Range<usize>) -> bool {
+        let key = name.to_ascii_lowercase();
+        if self.defines.contains_key(&key) {
+            return true;
+        }
+        if self.noted.insert(key) {
+            self.diags.push(
+                Diagnostic::new(
+                    code::W1419,
+                    Severity::Note,
+                    format!("`{name}` is not defined: its `{{::ifdef}}` / `{{::elseif}}` section is not compiled"),
+                )
+                .at(self.span(at))
+                .with_hint("ladderc does not read the preprocessor symbols of a SIMATIC AX build (`apax.yml`); the `{::else}` section, if any, is compiled"),
+            );
+        }
+        false
     }
 
     /// `defined (name)`: W1419 the first time a name nothing defined is asked for.

@@ -975,6 +975,26 @@ fn keyword_declarations(
     let mut in_struct = false;
     let mut fields = Vec::new();
     let stubs = declaration_only_blocks(src, toks);
+    // a declaration-only block named with an operator keyword (`{REDUND_OK} FUNCTION AND : ANY`,
+    // B&R's system stub `operator.fun`, which declares AND, OR, XOR, NOT and MOD as functions
+    // beside ADD and SHL): a name of the same length put back after the parse, so the stub is
+    // read as the others are (not compiled, one note W0021, `split_blocks`), not one E0011 and
+    // E0008 per stub hiding every other diagnostic of the project (before round 32)
+    for r in &stubs {
+        let Some(t) = toks
+            .get(r.start + 1)
+            .filter(|t| matches!(t.tok, Tok::Kw(_)))
+        else {
+            continue;
+        };
+        let name = word(src, t).to_string();
+        if name.len() > 1 {
+            let same_length = format!("_{}", &name[1..]);
+            text.get_or_insert_with(|| src.to_string())
+                .replace_range(t.range.clone(), &same_length);
+            fields.push((t.range.start, name));
+        }
+    }
     // parentheses open in a declaration's initial value
     let mut depth = 0usize;
     let mut k = 0;
@@ -1189,6 +1209,13 @@ fn restore_field_names(unit: &mut CompilationUnit, fields: &[(usize, String)]) {
     let mut parameters = Vec::new();
     for item in &mut unit.items {
         if let LibraryElement::Pou(p) = item {
+            // a stub named with an operator keyword (`FUNCTION AND : ANY`, `keyword_declarations`)
+            if let Some((_, name)) = fields
+                .iter()
+                .find(|(s, _)| *s == p.name.span.start as usize)
+            {
+                p.name.name.clone_from(name);
+            }
             for d in p.var_blocks.iter_mut().flat_map(|b| b.vars.iter_mut()) {
                 let at = d.name.span.start as usize;
                 if let Some((_, name)) = fields.iter().find(|(s, _)| *s == at) {
@@ -1665,6 +1692,13 @@ fn parse_text_as_read(
         }
         None => src,
     };
+    // 4CONTROL's `CONST ... END_CONST`: one E1095, the file not compiled (`hash_directives`)
+    if lang == Lang::St {
+        if let Some(d) = super::hash_directives::four_control_constants(file, src) {
+            diags.push(d);
+            return (CompilationUnit::default(), pending, Vec::new());
+        }
+    }
     let (mut toks, mut problems) = lex(src);
     if lang == Lang::St {
         if let Some(d) = super::scl::siemens_scl(file, src, &toks, &problems)

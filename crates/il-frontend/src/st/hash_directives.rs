@@ -8,7 +8,10 @@
 //! ladderc does not read (`#include`, `#if`, `#elif`) and for a `#else`/`#endif` without its
 //! `#ifdef` or a `#ifdef` never closed; a W1419 note the first time a condition asks for a name
 //! that nothing in the text defines (before: E0023 "this file is Siemens SCL", the rest of the
-//! file not compiled).
+//! file not compiled). Softing 4CONTROL's `#import "file.gvl"` (MECT's TPAC panels) is blanked
+//! too, with one note W1458 per file: the imported globals are those of the inputs. Its block of
+//! constants `CONST ... END_CONST` is one E1095 and the file is not compiled
+//! ([`four_control_constants`]).
 //!
 //! Invariants: sections nest; inside a section not compiled no define changes; a `#if` /
 //! `#elif` compiles none of its sections (no branch chosen by guess). Names are case-sensitive as
@@ -22,7 +25,7 @@ use diagnostics::{code, Diagnostic, Diagnostics, Severity};
 use std::collections::HashSet;
 
 const DIRECTIVES: &[&str] = &[
-    "define", "undef", "ifdef", "ifndef", "if", "elif", "else", "endif", "include",
+    "define", "undef", "ifdef", "ifndef", "if", "elif", "else", "endif", "include", "import",
 ];
 
 /// One open `#ifdef`: whether its current section is compiled, whether an earlier section was,
@@ -93,6 +96,7 @@ pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Opti
     let mut defines: HashSet<String> = HashSet::new();
     let mut noted: HashSet<String> = HashSet::new();
     let mut stack: Vec<Open> = Vec::new();
+    let mut imported = false;
     for &(start, line) in &lines {
         let on = stack.last().is_none_or(|o| o.on);
         let Some((lead, word, arg)) = outside(&quiet, start, line) else {
@@ -176,6 +180,24 @@ pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Opti
                     "open the section with `#ifdef NAME` or delete the line",
                 ));
             }
+            // `#import "Crosstable.gvl"` after a POU's header: Softing 4CONTROL / ATCMcontrol
+            // (MECT's TPAC panels) makes a resource's global variable file known to the POU;
+            // ladderc knows every input's globals, so the line is read as nothing, with one note
+            // per file naming what to give (before round 32: E0023 "Siemens SCL", the file not
+            // compiled)
+            "import" if on && !imported => {
+                imported = true;
+                diags.push(
+                    Diagnostic::new(
+                        code::W1458,
+                        Severity::Note,
+                        format!("`#import {arg}` (4CONTROL / ATCMcontrol) is read as nothing: the imported file is compiled only when it is an input"),
+                    )
+                    .at(at)
+                    .with_primary_label("4CONTROL import directive")
+                    .with_hint("give the imported file (its VAR_GLOBAL blocks) to ladderc as an input of its own"),
+                );
+            }
             "include" if on => diags.push(error(
                 "`#include` of the B&R preprocessor is not read".into(),
                 "give the included file to ladderc as an input of its own",
@@ -202,6 +224,45 @@ pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Opti
         );
     }
     Some(text)
+}
+
+/// E1095 at the first `CONST` line of a file whose `END_CONST` follows: Softing 4CONTROL's block of
+/// constants (`CONST this : INT := 48; END_CONST` after a POU's header), which IEC 61131-3 writes
+/// `VAR CONSTANT ... END_VAR`. The file is not compiled (one error for the dialect, not one per
+/// declaration read as a statement). A `CONST` inside a comment or a string is no block.
+pub fn four_control_constants(file: FileId, src: &str) -> Option<Diagnostic> {
+    let quiet = quiet_ranges(src);
+    let mut pos = 0;
+    let mut open: Option<(usize, usize)> = None;
+    for line in src.split_inclusive('\n') {
+        let lead = line.len() - line.trim_start().len();
+        let at = pos + lead;
+        pos += line.len();
+        if quiet.iter().any(|r| r.start <= at && at < r.end) {
+            continue;
+        }
+        let first = line
+            .trim_start()
+            .split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+            .next()
+            .unwrap_or("");
+        if open.is_none() && first.eq_ignore_ascii_case("CONST") {
+            open = Some((at, at + first.len()));
+        } else if first.eq_ignore_ascii_case("END_CONST") {
+            if let Some((start, end)) = open {
+                return Some(
+                    Diagnostic::error(
+                        code::E1095,
+                        "`CONST ... END_CONST` is a block of constants of 4CONTROL / ATCMcontrol, not IEC 61131-3: this file is not compiled",
+                    )
+                    .at(Span::new(file, start, end))
+                    .with_primary_label("4CONTROL block of constants")
+                    .with_hint("write the block as `VAR CONSTANT ... END_VAR` (IEC 61131-3 ed. 3, 6.5.2), the same declarations inside"),
+                );
+            }
+        }
+    }
+    None
 }
 
 /// The byte ranges of the comments (`(* *)` and `/* */` nested as the ST lexer reads them, `//` to

@@ -87,13 +87,13 @@ pub fn parse_statements_of(
     pou: &Pou,
     diags: &mut Diagnostics,
 ) -> Vec<ast::Stmt> {
-    let this_dot = pou.kind == crate::ast::PouKind::FunctionBlock
-        && !pou
-            .var_blocks
-            .iter()
-            .flat_map(|b| b.vars.iter())
-            .any(|v| v.name.is("THIS"));
-    parser::statements_in(file, src, base, this_dot, diags)
+    let this_declared = pou
+        .var_blocks
+        .iter()
+        .flat_map(|b| b.vars.iter())
+        .any(|v| v.name.is("THIS"));
+    let this_dot = pou.kind == crate::ast::PouKind::FunctionBlock && !this_declared;
+    parser::statements_in(file, src, base, this_dot, this_declared, diags)
 }
 
 /// Parses one expression (an SFC transition condition, `:= expr;` forms are not accepted here).

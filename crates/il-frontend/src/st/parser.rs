@@ -39,22 +39,26 @@ pub const MAX_EXPRESSION_OPERATIONS: usize = 1000;
 /// Parses a statement list (a POU body, an action or transition body). `base` is the byte offset of `src`
 /// in file `file`; errors are reported, the statements read are returned.
 pub fn statements(file: FileId, src: &str, base: usize, diags: &mut Diagnostics) -> Vec<Stmt> {
-    statements_in(file, src, base, false, diags)
+    statements_in(file, src, base, false, false, diags)
 }
 
 /// [`statements`] of a function block's body or method; `this_dot`: `THIS.x` and `THIS.M(...)`
 /// (IEC 61131-3 edition 3, Annex A: `Symbolic_Variable : ( 'THIS' '.' )? ...`) are read as
 /// `THIS^.x`, `THIS^.M(...)` (CODESYS, TwinCAT). Only where the block declares no variable `THIS`.
+/// `this_declared`: the POU declares a variable named `THIS`, so `this` alone is that variable,
+/// not the instance's address.
 pub fn statements_in(
     file: FileId,
     src: &str,
     base: usize,
     this_dot: bool,
+    this_declared: bool,
     diags: &mut Diagnostics,
 ) -> Vec<Stmt> {
     let mut local = Diagnostics::new();
     let mut p = Parser::new(file, src, base, &mut local);
     p.this_dot = this_dot;
+    p.this_declared = this_declared;
     // a statement list ends where its POU's, method's or action's body ends (`END_PROGRAM`, the
     // end of a TwinCAT `<ST>` element): "found the end of the body" (not "of text")
     p.eof_text = "the end of the body";
@@ -150,6 +154,8 @@ struct Parser<'s, 'd> {
     try_noted: bool,
     /// `THIS.x` is `THIS^.x` (edition 3's spelling; see [`statements_in`]).
     this_dot: bool,
+    /// The POU declares a variable named `THIS`: `this` alone reads it (see [`statements_in`]).
+    this_declared: bool,
     /// How the end of the text is described in "found ..." (`end of text`; in a body, `the end of
     /// the body`).
     eof_text: &'static str,
@@ -200,6 +206,7 @@ impl<'s, 'd> Parser<'s, 'd> {
             short_circuit_noted: false,
             try_noted: false,
             this_dot: false,
+            this_declared: false,
             eof_text: "end of text",
             last_error: None,
             arm_start: usize::MAX,
@@ -2208,8 +2215,12 @@ impl<'s, 'd> Parser<'s, 'd> {
             // (`this.x` where `THIS.x` is no block's own variable, a program's: a variable named
             // `this`, B&R Automation Studio's ST having no THIS; round 27, before: E0104/E0100
             // at each read)
+            // (a POU's own variable named `this`, IEC 61131-3 ed. 2 code where THIS is no
+            // keyword, 4CONTROL's `this : INT := 48;`: that variable; round 32, before: E1021
+            // "`^` cannot follow it" at each use)
             Tok::Ident
                 if self.ident(&t).is("THIS")
+                    && !self.this_declared
                     && *self.peek_at(1) != Tok::Caret
                     && *self.peek_at(1) != Tok::Dot =>
             {
