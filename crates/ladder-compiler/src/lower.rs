@@ -18,8 +18,10 @@
 //!    `lower_emit`), so it too reads what the coil wrote, and an edge detector still runs once.
 //! 3. Jumps and returns come last, with the same capture rule.
 //!
-//! Feedback loops must pass through an in-out variable (it reads the previous value); other loops are
-//! E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot:
+//! A feedback loop is cut at an in-out variable or a function block instance on it (the reader sees
+//! the previous value), else at the box evaluated first, which reads a function box's previous result
+//! from a hidden `__loop_<localId>` (child module `lower_feedback`, IEC 61131-3 ed. 2 4.1.3); a loop
+//! through nothing that holds a value is E3010 and the network is skipped. Hidden names start with `__`, which IEC identifiers cannot:
 //! `__trig_<localId>` edge detectors, `__tmp_<TYPE>_<n>` temporaries (reused from network to network),
 //! `__out_<localId>` results of functions called under EN, `__skip_<localId>` EN labels.
 //!
@@ -55,6 +57,8 @@ mod lower_block;
 mod lower_double;
 #[path = "lower_emit.rs"]
 mod lower_emit;
+#[path = "lower_feedback.rs"]
+mod lower_feedback;
 #[path = "lower_order.rs"]
 mod lower_order;
 #[path = "lower_reads.rs"]
@@ -694,6 +698,9 @@ struct NetLowering<'a, 'i> {
     /// The ENO values of [`Self::en_results`] that a write is guarded by: stored once, when the box
     /// is called, so the write sees the EN the box saw.
     guards: HashSet<ValId>,
+    /// Function boxes whose result an earlier box of a loop made of wires only reads from the
+    /// previous evaluation: each keeps its result in its hidden variable (`lower_feedback`).
+    feedback_sources: HashSet<usize>,
 }
 
 /// The deepest nesting of a network's logic (contacts in series, parallel branches, negations) that
@@ -725,6 +732,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             too_deep: None,
             en_results: HashMap::default(),
             guards: HashSet::default(),
+            feedback_sources: HashSet::default(),
         }
     }
 
@@ -758,6 +766,7 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         self.too_deep = None;
         self.en_results.clear();
         self.guards.clear();
+        self.feedback_sources.clear();
     }
 
     fn at(&self, node: usize) -> Where {
@@ -821,7 +830,8 @@ impl<'a, 'i> NetLowering<'a, 'i> {
         let mut deps = deps_map(g, net, &implicit);
         // A loop is cut at a wire leaving a variable or a function block instance: the reader then
         // sees the value from the previous scan. Variables are preferred, then the wire that runs
-        // furthest backwards (right to left), as drawn feedback wires do.
+        // furthest backwards (right to left), as drawn feedback wires do. A loop of wires and
+        // function boxes only is cut at the box evaluated first (`lower_feedback`).
         loop {
             let comps = graph::cycles(net, &deps);
             if comps.is_empty() {
@@ -853,10 +863,19 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                             d.retain(|x| *x != s);
                         }
                     }
-                    None => {
-                        self.report_loop(ctx, comp);
-                        return None;
-                    }
+                    // wires only: cut at the box evaluated first (`lower_feedback`)
+                    None => match self.feedback_cut(&comp, &deps) {
+                        Some((t, s)) => {
+                            self.feedback_sources.insert(s);
+                            if let Some(d) = deps.get_mut(&t) {
+                                d.retain(|x| *x != s);
+                            }
+                        }
+                        None => {
+                            self.report_loop(ctx, comp);
+                            return None;
+                        }
+                    },
                 }
             }
         }
@@ -882,6 +901,9 @@ impl<'a, 'i> NetLowering<'a, 'i> {
             .iter()
             .map(|&i| match &g.nodes[i].kind {
                 Kind::Block(b) => format!("{} (localId {})", b.type_name, g.nodes[i].id),
+                Kind::Contact { var, .. } => {
+                    format!("contact `{}` (localId {})", var.trim(), g.nodes[i].id)
+                }
                 _ => format!("localId {}", g.nodes[i].id),
             })
             .collect();
@@ -892,10 +914,10 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                 code::E3010,
                 first,
                 g.nodes[first].span,
-                format!("feedback loop without a variable: {}", names.join(" -> ")),
+                format!("feedback loop through nothing that holds a value: {}", names.join(" -> ")),
             )
             .with_hint(
-                "route the loop through an in-out variable; it then reads the previous value",
+                "put a function box, a function block instance or an in-out variable on the loop: it keeps the previous value",
             );
         for &i in &comp[1..] {
             d = d.with_label(g.nodes[i].span, "part of the loop");
@@ -1013,6 +1035,9 @@ impl<'a, 'i> NetLowering<'a, 'i> {
                     };
                     let op = field_operand(&inst, &pin, w.span);
                     return Some(self.val(Val::Leaf { op, neg: false }, src.span));
+                }
+                Kind::Block(_) if self.feedback_sources.contains(&w.from) => {
+                    return self.feedback_read(w.from, w);
                 }
                 _ => return None,
             }

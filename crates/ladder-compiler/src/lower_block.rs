@@ -351,7 +351,9 @@ impl NetLowering<'_, '_> {
                             ..
                         } = &self.vals[v]
                         {
-                            if self.pou.var_type(r).is_none() {
+                            // (a hidden name, `__loop_<localId>` of a loop of wires, is no
+                            // user's: E3017 below says what is missing)
+                            if self.pou.var_type(r).is_none() && !r.base.name.starts_with("__") {
                                 undeclared = true;
                                 let d = self
                                     .diag(
@@ -392,7 +394,12 @@ impl NetLowering<'_, '_> {
                 // do. A variable wired straight to the result is not written at all (see
                 // `NetLowering::en_results`). The result and that never-written initial value get
                 // their own hidden variables.
-                let (result, initial) = if en.is_some() {
+                let (result, initial) = if en.is_none() && self.feedback_sources.contains(&i) {
+                    // read back by an earlier box of a loop of wires (`lower_feedback`): kept
+                    let name = self.feedback_var(i);
+                    self.pou.declare_hidden(&name, result_ty.clone(), span);
+                    (var_operand(&name, span), None)
+                } else if en.is_some() {
                     let name = format!("__out_{}", sanitize(&node.id));
                     self.pou.declare_hidden(&name, result_ty.clone(), span);
                     let init = format!("__init_{}", sanitize(&node.id));

@@ -88,21 +88,15 @@ fn confnode_dirs(session: &Session, dir: &Path) -> Vec<PathBuf> {
     found
 }
 
-/// Reads `path` into the source map, when it exists.
+/// Reads `path` into the source map, when it exists, decoded as `plc.xml` is: a byte that is not
+/// UTF-8 (a Windows-1252 `´` in a C comment of `cfile.xml`) makes the file read as Windows-1252
+/// with note W0305 at that byte, as for any input (round 32, before: one E9001 without a place
+/// and exit 2; `tests/tests/fbd_r32_run.rs`).
 fn read(session: &mut Session, path: &Path) -> Option<FileId> {
     if !session.file_exists(path) {
         return None;
     }
-    match session.read_file(path) {
-        Ok(text) => Some(session.map.add_file_owned(path.display().to_string(), text)),
-        Err(e) => {
-            session.diags.push(
-                Diagnostic::error(code::E9001, format!("cannot read {}: {e}", path.display()))
-                    .with_hint("check the path and its permissions (a Beremiz confnode file)"),
-            );
-            None
-        }
-    }
+    session.read_decoded(path)
 }
 
 fn walk(

@@ -262,6 +262,74 @@ impl Session {
         Err(not_in_memory())
     }
 
+    /// Adds a decoded file to the source map, with note W0305 at its first byte that is not UTF-8
+    /// when it was read as Windows-1252 ([`crate::encoding::Decoded::fallback_at`]).
+    pub fn add_decoded(
+        &mut self,
+        shown: String,
+        decoded: crate::encoding::Decoded,
+    ) -> diagnostics::FileId {
+        let fallback_at = decoded.fallback_at;
+        let file = if decoded.encoding == diagnostics::FileEncoding::Utf8 && decoded.byte_base == 0
+        {
+            self.map.add_file_owned(shown, decoded.text)
+        } else {
+            self.map
+                .add_decoded(shown, decoded.text, decoded.encoding, decoded.byte_base)
+        };
+        if let Some(at) = fallback_at {
+            self.diags.push(
+                Diagnostic::new(
+                    code::W0305,
+                    diagnostics::Severity::Note,
+                    "not valid UTF-8 from here on: the file is read as Windows-1252 \
+                     (ISO-8859-1 with the CODESYS, TwinCAT and TIA Portal characters)",
+                )
+                .at(diagnostics::Span::new(file, at, at))
+                .with_hint("save the file as UTF-8 to silence this note, or check that the file is not damaged"),
+            );
+        }
+        file
+    }
+
+    /// Reads `path` (from the overlay, or from disk when [`Session::disk`]) and decodes it as an
+    /// input file is decoded (`crate::encoding`: a declared or Windows-1252 encoding, W0305 at the
+    /// first byte that is not UTF-8), into the source map; `None` (E9001 reported) when it cannot.
+    pub fn read_decoded(&mut self, path: &Path) -> Option<diagnostics::FileId> {
+        let shown = path.display().to_string();
+        let decoded = if let Some(t) = self.overlay.get(path) {
+            Ok(crate::encoding::Decoded {
+                text: t.clone(),
+                encoding: diagnostics::FileEncoding::Utf8,
+                byte_base: 0,
+                fallback_at: None,
+            })
+        } else if self.disk {
+            match std::fs::read(path) {
+                Ok(bytes) => crate::encoding::decode(bytes).map_err(|e| {
+                    Diagnostic::error(code::E9001, format!("{shown} {}", e.message))
+                        .with_hint(e.hint)
+                }),
+                Err(e) => Err(
+                    Diagnostic::error(code::E9001, format!("cannot read {shown}: {e}"))
+                        .with_hint("check the path and its permissions"),
+                ),
+            }
+        } else {
+            Err(Diagnostic::error(
+                code::E9001,
+                format!("cannot read {shown}: {}", not_in_memory()),
+            ))
+        };
+        match decoded {
+            Ok(d) => Some(self.add_decoded(shown, d)),
+            Err(d) => {
+                self.diags.push(d);
+                None
+            }
+        }
+    }
+
     /// Whether `path` is in the overlay, or (when [`Session::disk`]) a file on disk.
     pub fn file_exists(&self, path: &Path) -> bool {
         self.overlay.contains_key(path) || (self.disk && path.is_file())
@@ -463,7 +531,6 @@ impl Session {
                     continue;
                 }
             };
-            let fallback_at = decoded.fallback_at;
             // A UTF-8 byte-order mark is dropped: positions count from the first character after it
             // (JSON's byte offsets add it back: `SourceMap::add_file`).
             let text_after_bom = decoded
@@ -492,25 +559,7 @@ impl Session {
             } else {
                 input_lang(p, text_after_bom, lang)
             };
-            let file =
-                if decoded.encoding == diagnostics::FileEncoding::Utf8 && decoded.byte_base == 0 {
-                    self.map.add_file_owned(shown, decoded.text)
-                } else {
-                    self.map
-                        .add_decoded(shown, decoded.text, decoded.encoding, decoded.byte_base)
-                };
-            if let Some(at) = fallback_at {
-                self.diags.push(
-                    Diagnostic::new(
-                        code::W0305,
-                        diagnostics::Severity::Note,
-                        "not valid UTF-8 from here on: the file is read as Windows-1252 \
-                         (ISO-8859-1 with the CODESYS, TwinCAT and TIA Portal characters)",
-                    )
-                    .at(diagnostics::Span::new(file, at, at))
-                    .with_hint("save the file as UTF-8 to silence this note, or check that the file is not damaged"),
-                );
-            }
+            let file = self.add_decoded(shown, decoded);
             // Borrowed from the source map (a field apart from the diagnostics): the text is held once.
             let src = &self.map.get(file).text;
             // an OpenPLC Editor v4 project.json with its POUs inline, read as ST; a `.json` input

@@ -25,6 +25,7 @@
 //! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
 //! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
 
+pub mod action_vars;
 pub mod actions;
 pub mod chart;
 pub mod flags;
@@ -388,7 +389,10 @@ pub fn lower_chart<'e, 'a>(
             })],
             Target::Body(lang) => {
                 match snippets.lower(ctx, lang, Purpose::Action, &mut hidden, &a.display) {
-                    Some(code) => code,
+                    Some(code) => {
+                        action_vars::warn_overwritten(ctx, &acts, &code, &a.display, &pou_name);
+                        code
+                    }
                     None => continue,
                 }
             }
