@@ -126,12 +126,12 @@ fn non_constants_non_integers_cycles_and_overflows_are_one_located_error_each() 
     assert_eq!(
         lines,
         vec![
-            "main.st:3:16: error[E0022]: constant expression `NC`: `NC` is not an integer constant declared before",
-            "main.st:4:16: error[E0022]: constant expression `V`: `V` is not an integer constant declared before",
+            "main.st:3:16: error[E0022]: constant expression `NC`: `NC` names no constant with a value in the files given",
+            "main.st:4:16: error[E0022]: constant expression `V`: `V` is not an integer constant",
             "main.st:5:16: error[E0022]: constant expression `BIG`: the value overflows",
-            "main.st:6:14: error[E0022]: constant expression `A`: `A` is not an integer constant declared before",
-            "GVL.st:2:14: error[E0022]: constant expression `B + 1`: `B` is not a constant declared before",
-            "GVL2.st:2:14: error[E0022]: constant expression `A + 1`: `A` is not a constant declared before",
+            // (round 32: the cycle's `A`, without a value, is one error counting its uses)
+            "main.st:6:14: error[E0022]: constant expression `A`: `A` names no constant with a value in the files given (2 uses)",
+            "GVL.st:2:14: error[E0022]: constant expression `B + 1`: `B` names no constant with a value in the files given",
         ]
     );
 }

@@ -465,7 +465,7 @@ END_VAR
     assert!(
         lines[0].starts_with(
             "robot.st:3:35: error[E0022]: constant expression `RobotLibParams.TOOL_MAX - 1`: \
-             `RobotLibParams.TOOL_MAX` is not an integer constant declared before: no global \
+             `RobotLibParams.TOOL_MAX` names no constant with a value in the files given: no global \
              variable list or library parameter list `RobotLibParams` given with the file declares \
              `TOOL_MAX`"
         ),

@@ -518,7 +518,7 @@ fn an_expression_as_initial_value_is_located_with_a_declaration_hint() {
     assert!(
         lines
             .iter()
-            .any(|l| l.contains("error[E0022]") && l.contains("`b` is not")),
+            .any(|l| l.contains("error[E0022]") && l.contains("`b` names no constant")),
         "{lines:?}"
     );
     // in an IL body the operator keeps the IL hint
@@ -587,14 +587,16 @@ fn constant_expressions_that_cannot_be_evaluated_are_one_located_e0022_each() {
     let (code, lines) = check_text("bad.st", src);
     assert_eq!(code, Some(1));
     let hint = "(hint: use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type)";
+    let missing = "(hint: declare the constant in a VAR_GLOBAL CONSTANT list given with the files, or write the number; a library's constant (TwinCAT's, CODESYS's): give the library's source project with --lib)";
     assert_eq!(
         lines,
         vec![
-            format!("bad.st:8:16: error[E0022]: constant expression `k-1`: `k` is not an integer constant declared before {hint}"),
+            // (round 32: a name that is no constant of the files given says so, with its own hint)
+            format!("bad.st:8:16: error[E0022]: constant expression `k-1`: `k` names no constant with a value in the files given {missing}"),
             format!("bad.st:9:14: error[E0022]: constant expression `N / (N - 4)`: division by zero {hint}"),
             format!("bad.st:10:16: error[E0022]: constant expression `N * 1000000000`: the value overflows {hint}"),
             "bad.st:11:14: error[E0022]: an operator is missing in this constant expression (hint: write + - * / or MOD between the operands)".to_string(),
-            format!("bad.st:12:16: error[E0022]: constant expression `PI_C`: `PI_C` is not an integer constant declared before {hint}"),
+            format!("bad.st:12:16: error[E0022]: constant expression `PI_C`: `PI_C` is not an integer constant {hint}"),
         ]
     );
 }

@@ -103,7 +103,7 @@ fn constant_expressions_without_a_value_are_one_located_e0022_each() {
         heads,
         vec![
             "e.st:4:17: error[E0022]: constant expression `T#1S * T#2S`: durations only add to and subtract from durations",
-            "e.st:6:18: error[E0022]: constant expression `C1`: `C1` is not an integer constant declared before",
+            "e.st:6:18: error[E0022]: constant expression `C1`: `C1` is not an integer constant",
             "e.st:6:42: error[E0022]: constant expression `D#2024-01-01 + T#1S`: only numbers and durations (T#...) make constant expressions",
         ]
     );

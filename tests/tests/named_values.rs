@@ -87,7 +87,7 @@ fn named_values_on_a_non_integer_base_are_rejected() {
     );
     assert_eq!(
         heads,
-        ["real.st:1:12: error[E0011]: `REAL` cannot carry named values"]
+        ["real.st:1:12: error[E0011]: `REAL` cannot carry named values in ladderc"]
     );
 }
 

@@ -280,7 +280,7 @@ fn enumeration_values_are_no_numbers_in_initial_values() {
     assert_eq!(code, Some(1), "{lines:?}");
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
-        lines[0].starts_with("init.st:4:23: error[E0022]: constant expression `E_Mode.STOP + 1`: `STOP` is not a constant declared before"),
+        lines[0].starts_with("init.st:4:23: error[E0022]: constant expression `E_Mode.STOP + 1`: `STOP` names no constant with a value in the files given"),
         "{lines:?}"
     );
     let dir = tempfile::tempdir().unwrap();
@@ -361,8 +361,8 @@ fn blark_fragments_rejected_located() {
         (
             "enum_bounds_undeclared.st",
             &[
-                "enum_bounds_undeclared.st:5:31: error[E0022]: constant expression `E_Runner.RUNNER_START+1`: `E_Runner.RUNNER_START` is not an integer constant declared before: no global variable list or library parameter list `E_Runner` given with the file declares `RUNNER_START`",
-                "enum_bounds_undeclared.st:5:56: error[E0022]: constant expression `E_Runner.RUNNER_END-1`: `E_Runner.RUNNER_END` is not an integer constant declared before: no global variable list or library parameter list `E_Runner` given with the file declares `RUNNER_END`",
+                "enum_bounds_undeclared.st:5:31: error[E0022]: constant expression `E_Runner.RUNNER_START+1`: `E_Runner.RUNNER_START` names no constant with a value in the files given: no global variable list or library parameter list `E_Runner` given with the file declares `RUNNER_START`",
+                "enum_bounds_undeclared.st:5:56: error[E0022]: constant expression `E_Runner.RUNNER_END-1`: `E_Runner.RUNNER_END` names no constant with a value in the files given: no global variable list or library parameter list `E_Runner` given with the file declares `RUNNER_END`",
             ],
         ),
         (

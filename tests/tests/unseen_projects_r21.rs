@@ -193,7 +193,7 @@ END_PROGRAM
     );
     assert_eq!(
         heads,
-        ["bad.st:1:28: error[E0022]: constant expression `A OR x`: `x` is not an integer constant declared before"]
+        ["bad.st:1:28: error[E0022]: constant expression `A OR x`: `x` names no constant with a value in the files given"]
     );
 }
 

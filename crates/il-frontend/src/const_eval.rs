@@ -155,11 +155,8 @@ fn eval_at(e: &BoundExpr, consts: &Known, depth: u32) -> Result<ConstNum, String
                 .filter(|_| consts.integers)
         }) {
             Some(v) if !consts.integers || matches!(v, ConstNum::Int(_)) => Ok(*v),
-            _ if consts.integers => Err(format!(
-                "`{}` is not an integer constant declared before",
-                n.name
-            )),
-            _ => Err(format!("`{}` is not a constant declared before", n.name)),
+            Some(_) => Err(format!("`{}` is not an integer constant", n.name)),
+            None => Err(missing_constant(&n.name)),
         },
         BoundExpr::Neg(a, _) => match eval_at(a, consts, depth + 1)? {
             ConstNum::Int(v) => int(v.checked_neg()),
@@ -465,4 +462,79 @@ fn binary(op: u8, a: ConstNum, b: ConstNum) -> Result<ConstNum, String> {
             }
         }
     }
+}
+
+/// The reason of an E0022 for a name that no constant of the files given declares with a value
+/// (a library's constant, `MAX_STRING_LENGTH` of Tc3_PLCopen_OpcUa; a variable; constants naming
+/// each other in a cycle): [`missing_constant_name`] reads the name back.
+fn missing_constant(name: &str) -> String {
+    format!("`{name}` names no constant with a value in the files given")
+}
+
+/// Whether `why` (an E0022's reason) is that no constant of the files declares the name.
+pub fn is_missing_constant(why: &str) -> bool {
+    why.contains("` names no constant with a value ")
+}
+
+/// The name an E0022's message says no constant of the files declares ([`missing_constant`]).
+fn missing_constant_name(message: &str) -> Option<&str> {
+    let (head, _) = message.split_once("` names no constant with a value ")?;
+    let (_, name) = head.rsplit_once(": `")?;
+    Some(name)
+}
+
+/// One E0022 per constant that no file given declares, at its first use (by file and position),
+/// its message counting the uses (`(5 uses)`) and a label at each other use, which is left out:
+/// one missing name is one cause (README, "One cause, one diagnostic"), as an unknown type's
+/// E1003 is (round 32, before: one E0022 per use, 19 for one library constant of a project).
+pub fn one_error_per_missing_constant(diags: &mut diagnostics::Diagnostics) {
+    // upper-case name -> the uses' (span, message), in the order reported
+    let mut uses: HashMap<String, Vec<(diagnostics::Span, String)>> = HashMap::new();
+    for d in diags.iter() {
+        if d.code != diagnostics::code::E0022 {
+            continue;
+        }
+        let (Some(span), Some(name)) = (d.span, missing_constant_name(&d.message)) else {
+            continue;
+        };
+        uses.entry(name.to_ascii_uppercase())
+            .or_default()
+            .push((span, d.message.clone()));
+    }
+    let mut first: Vec<(diagnostics::Span, String, Vec<diagnostics::Span>)> = Vec::new();
+    for (_, mut at) in uses {
+        if at.len() < 2 {
+            continue;
+        }
+        at.sort_by_key(|(s, _)| (s.file.0, s.start, s.end));
+        at.dedup_by_key(|(s, _)| *s);
+        let (span, message) = at.remove(0);
+        first.push((span, message, at.into_iter().map(|(s, _)| s).collect()));
+    }
+    if first.is_empty() {
+        return;
+    }
+    let left_out: std::collections::HashSet<diagnostics::Span> = first
+        .iter()
+        .flat_map(|(_, _, o)| o.iter().copied())
+        .collect();
+    diags.retain(|d| {
+        d.code != diagnostics::code::E0022
+            || missing_constant_name(&d.message).is_none()
+            || !d.span.is_some_and(|s| left_out.contains(&s))
+    });
+    diags.update(|d| {
+        let Some((_, _, others)) = first.iter().find(|(s, m, _)| {
+            d.code == diagnostics::code::E0022 && d.span == Some(*s) && d.message == *m
+        }) else {
+            return;
+        };
+        d.message = format!("{} ({} uses)", d.message, others.len() + 1);
+        for s in others {
+            d.labels.push(diagnostics::Label {
+                span: *s,
+                message: "also used here".into(),
+            });
+        }
+    });
 }

@@ -1170,7 +1170,9 @@ impl<'s> Ctx<'s> {
             Ok(v) => Some(v),
             Err(why) => {
                 let text = self.text(l, r).trim().to_string();
-                let hint = if integers {
+                let hint = if crate::const_eval::is_missing_constant(&why) {
+                    "declare the constant in a VAR_GLOBAL CONSTANT list given with the files, or write the number; a library's constant (TwinCAT's, CODESYS's): give the library's source project with --lib"
+                } else if integers {
                     "use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type"
                 } else {
                     "use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type"
@@ -1404,20 +1406,31 @@ impl<'s> Ctx<'s> {
     }
 
     /// Checks the base type of an edition-3 data type with named values (`INT (Low := 1, High := 100)`,
-    /// IEC 61131-3 6.4.4.3): it must be an elementary integer or bit-string type, else error E0011 at
-    /// the base type's name. The values are kept as an enumeration's; the base type is not.
-    pub fn named_values_base(&mut self, base: &Ident, l: usize, r: usize) {
+    /// IEC 61131-3 6.4.4.3): ladderc reads it as an enumeration, so the base must be an elementary
+    /// integer or bit-string type, else error E0011 at the base type's name (edition 3's Annex A
+    /// allows any elementary base, `LREAL (Home := 0.0)`: a limit of ladderc). Then that E0011 is
+    /// the one error of the type: the E0022 of its values up to `end` (`0.0` is no integer) are
+    /// withdrawn (round 32, before: one more error per value). The values are kept as an
+    /// enumeration's; the base type is not.
+    pub fn named_values_base(&mut self, base: &Ident, l: usize, r: usize, end: usize) {
         const INTEGER_TYPES: [&str; 12] = [
             "SINT", "INT", "DINT", "LINT", "USINT", "UINT", "UDINT", "ULINT", "BYTE", "WORD",
             "DWORD", "LWORD",
         ];
         if !INTEGER_TYPES.contains(&base.key().as_str()) {
+            let values = self.span(r, end);
+            self.diags.retain(|d| {
+                d.code != code::E0022
+                    || !d.span.is_some_and(|s| {
+                        s.file == values.file && s.start >= values.start && s.end <= values.end
+                    })
+            });
             self.hint(
                 code::E0011,
-                format!("`{}` cannot carry named values", base.name),
+                format!("`{}` cannot carry named values in ladderc", base.name),
                 l,
                 r,
-                "a data type with named values is based on an integer type: `INT (Low := 1, High := 100)`",
+                "ladderc reads a data type with named values as an enumeration, on an integer or bit-string base (`INT (Low := 1, High := 100)`); for other values declare VAR_GLOBAL CONSTANTs of the base type",
             );
         }
     }

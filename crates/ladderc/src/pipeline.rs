@@ -844,6 +844,8 @@ impl Session {
             &mut pending,
             &mut var_config,
         );
+        // a constant no file declares (a library's): one E0022, at its first use
+        il_frontend::const_eval::one_error_per_missing_constant(&mut self.diags);
         // a TwinCAT global variable list is named after its object (`GVL.x`)
         for (k, list) in twincat_lists {
             if let Some(unit) = units.get_mut(k) {

@@ -186,7 +186,18 @@ impl Analyzer<'_> {
         // a structure that holds itself by value has no size: E0343, the field cut
         self.check_struct_cycles();
         // Globals outside configurations.
+        // their constants first: an initial value may name a constant of a list read later
         let mut global_consts = Consts::new();
+        let free_constants: Vec<&ast::VarDecl> = units
+            .iter()
+            .flat_map(|u| u.items.iter())
+            .filter_map(|item| match item {
+                LibraryElement::GlobalVars(b) if b.constant => Some(b.vars.iter()),
+                _ => None,
+            })
+            .flatten()
+            .collect();
+        self.constants_in_any_order(&free_constants, &mut global_consts, false);
         let mut deferred_inits: Vec<(usize, ast::Initializer)> = Vec::new();
         for unit in units {
             for item in &unit.items {
@@ -280,6 +291,8 @@ impl Analyzer<'_> {
         // the configurations' names so far: IEC 61131-3 (ed. 3, 6.1.2, 6.8.1) names each
         // configuration of a project, and a name is unique in its scope
         let mut config_names: HashMap<String, Span> = HashMap::new();
+        // each configuration's constants (with the free globals' ones)
+        let mut config_consts: Vec<Consts> = Vec::new();
         for unit in units {
             for item in &unit.items {
                 if let LibraryElement::Configuration(c) = item {
@@ -290,6 +303,15 @@ impl Analyzer<'_> {
                     let (held, c_globals) = self.hold_block_inits(&c.globals);
                     deferred_config.extend(held.into_iter().map(|(at, i)| (config, None, at, i)));
                     let globals = self.declare_vars(&c_globals, &global_consts, None);
+                    // the configuration's constants, for its resources' initial values too
+                    let mut consts = global_consts.clone();
+                    let own: Vec<&ast::VarDecl> = c
+                        .globals
+                        .iter()
+                        .filter(|b| b.constant)
+                        .flat_map(|b| b.vars.iter())
+                        .collect();
+                    self.constants_in_any_order(&own, &mut consts, false);
                     self.record_lists(&c.globals, &globals, |index| GlobalRef::Configuration {
                         config,
                         index,
@@ -304,7 +326,7 @@ impl Analyzer<'_> {
                                 held.into_iter()
                                     .map(|(at, i)| (config, Some(resource), at, i)),
                             );
-                            let globals = self.declare_vars(&r_globals, &global_consts, None);
+                            let globals = self.declare_vars(&r_globals, &consts, None);
                             self.record_lists(&r.globals, &globals, |index| GlobalRef::Resource {
                                 config,
                                 resource,
@@ -319,6 +341,7 @@ impl Analyzer<'_> {
                             }
                         })
                         .collect();
+                    config_consts.push(consts);
                     self.model.configurations.push(Configuration {
                         name: c.name.name.clone(),
                         span: c.span,
@@ -329,9 +352,10 @@ impl Analyzer<'_> {
                 }
             }
         }
-        // POU variables.
-        for (id, p) in &pous {
-            self.declare_pou(*id, p, &global_consts);
+        // POU variables, each block's before those of the POUs holding its instances: their
+        // initial values name the block's inputs (`decl_order`)
+        for (id, p) in super::decl_order::pou_declaration_order(&pous) {
+            self.declare_pou(id, p, &global_consts);
         }
         // the initializers of global instances of the program's function blocks (see above)
         for (i, init) in deferred_inits {
@@ -349,7 +373,8 @@ impl Analyzer<'_> {
                 continue;
             };
             let ty = globals[i].ty.clone();
-            let value = self.const_init(&init, &ty, &global_consts);
+            let consts = config_consts.get(c).unwrap_or(&global_consts);
+            let value = self.const_init(&init, &ty, consts);
             let config = &mut self.model.configurations[c];
             let globals = match r {
                 Some(r) => &mut config.resources[r].globals,
@@ -413,8 +438,8 @@ impl Analyzer<'_> {
     /// The scalar (elementary, string, enumerated) constants of the project's VAR_GLOBAL CONSTANT
     /// blocks, top-level and of configurations, evaluated silently before the structures are
     /// declared, for the initial values of structure fields (`Magic : BYTE := C_MAGIC;`). A
-    /// constant may use one declared after it (a second round); their errors are reported when
-    /// the globals are declared.
+    /// constant may use one declared after it (`constants_in_any_order`); their errors are
+    /// reported when the globals are declared.
     fn early_global_consts(&mut self, units: &[CompilationUnit]) -> Consts {
         let blocks: Vec<&VarBlock> = units
             .iter()
@@ -431,38 +456,8 @@ impl Analyzer<'_> {
             .filter(|b| b.constant)
             .collect();
         let mut consts = Consts::new();
-        if blocks.is_empty() {
-            return consts;
-        }
-        let silent = std::mem::replace(&mut self.silent, true);
-        for _round in 0..2 {
-            for b in &blocks {
-                for d in &b.vars {
-                    let key = d.name.key();
-                    if consts.contains_key(&key) {
-                        continue;
-                    }
-                    let (
-                        Some(init @ ast::Initializer::Value(_)),
-                        TypeRef::Named(_) | TypeRef::String { .. },
-                    ) = (&d.init, &d.ty)
-                    else {
-                        continue;
-                    };
-                    let ty = self.resolve_type(&d.ty);
-                    if !matches!(
-                        ty,
-                        Type::Elementary(_) | Type::String { .. } | Type::Enum(_)
-                    ) {
-                        continue;
-                    }
-                    if let Some(v) = self.const_init(init, &ty, &consts) {
-                        consts.insert(key, (ty, v));
-                    }
-                }
-            }
-        }
-        self.silent = silent;
+        let decls: Vec<&ast::VarDecl> = blocks.iter().flat_map(|b| b.vars.iter()).collect();
+        self.constants_in_any_order(&decls, &mut consts, true);
         consts
     }
 
@@ -931,16 +926,14 @@ impl Analyzer<'_> {
         // a POU's own constants first: an initial value may name one declared below it (`tmr :
         // TON := (PT := DELAY);` above `VAR CONSTANT DELAY : TIME := T#1S;`), as CODESYS and
         // TwinCAT resolve names, not order (their errors, if any, are the same as below: shown once)
-        if pou.is_some() {
-            for d in blocks.iter().filter(|b| b.constant).flat_map(|b| &b.vars) {
-                let Some(i @ Initializer::Value(_)) = &d.init else {
-                    continue;
-                };
-                let ty = self.resolve_type(&d.ty);
-                if let Some(v) = self.const_init(i, &ty, &consts) {
-                    consts.insert(d.name.key(), (ty, v));
-                }
-            }
+        // (and a configuration's or resource's constants likewise, for its globals' initial values)
+        let own: Vec<&ast::VarDecl> = blocks
+            .iter()
+            .filter(|b| b.constant)
+            .flat_map(|b| &b.vars)
+            .collect();
+        if !own.is_empty() {
+            self.constants_in_any_order(&own, &mut consts, false);
         }
         for b in blocks {
             // the members of a named global variable list (CODESYS GVL) are seen per list: two
@@ -1907,7 +1900,7 @@ impl Analyzer<'_> {
                     None => {
                         self.error(code::E1025, v.span, format!("`{}` is not a constant known here", v.base.name))
                             .label("not a constant")
-                            .hint("initial values are literals, enumerated values, or constants declared before");
+                            .hint("initial values are literals, enumerated values, or constants (VAR CONSTANT, VAR_GLOBAL CONSTANT) of the POU, its configuration or the global lists");
                         None
                     }
                 }
@@ -1953,7 +1946,7 @@ impl Analyzer<'_> {
                 )
                 .label("not a constant")
                 .hint(
-                    "initial values are literals, enumerated values, or constants declared before",
+                    "initial values are literals, enumerated values, or constants (VAR CONSTANT, VAR_GLOBAL CONSTANT) of the POU, its configuration or the global lists",
                 );
                 None
             }

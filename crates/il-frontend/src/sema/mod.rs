@@ -12,6 +12,7 @@ mod bit_arith;
 mod block_cycles;
 mod body;
 mod calls;
+mod decl_order;
 mod decls;
 mod loose_enum;
 mod memory;

@@ -122,15 +122,17 @@ fn initial_value_qualifiers(src: &str, toks: &[Token], blanks: &mut Vec<std::ops
     }
 }
 
-/// E0022 `d` about a constant `X` (``constant expression `X - 1`: `X` is not an integer constant
-/// declared before``) whose list qualifier was blanked: the constant named as written in `src`
+/// E0022 `d` about a constant `X` (``constant expression `X - 1`: `X` names no constant with a
+/// value in the files given``) whose list qualifier was blanked: the constant named as written in `src`
 /// (`RobotLibParams.TOOL_MAX`), and the list that is not given.
 pub(super) fn name_qualifier(d: &mut diagnostics::Diagnostic, src: &str) {
     let Some(span) = d.span else {
         return;
     };
-    let marker = "` is not ";
-    let Some(end) = d.message.find(marker) else {
+    let Some(end) = ["` names no constant ", "` is not "]
+        .iter()
+        .find_map(|marker| d.message.find(marker))
+    else {
         return;
     };
     let Some(open) = d.message[..end].rfind('`') else {
@@ -160,8 +162,8 @@ pub(super) fn name_qualifier(d: &mut diagnostics::Diagnostic, src: &str) {
     };
     let qualified = format!("{list}.{name}");
     d.message = d.message.replacen(
-        &format!("`{name}` is not an integer constant declared before"),
-        &format!("`{qualified}` is not an integer constant declared before: no global variable list or library parameter list `{list}` given with the file declares `{name}`"),
+        &format!("`{name}` names no constant with a value in the files given"),
+        &format!("`{qualified}` names no constant with a value in the files given: no global variable list or library parameter list `{list}` given with the file declares `{name}`"),
         1,
     );
     if let Some(expr_open) = d.message.find("constant expression `") {

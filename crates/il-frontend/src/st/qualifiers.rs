@@ -314,7 +314,12 @@ fn namespace_blocks(src: &str, toks: &[Token], text: &mut Option<String>) -> Vec
 /// Whether `base` (upper case; empty: none) or one of the bases it extends in turn
 /// ([`PROJECT_BASES`]) declares variable `var` in one of the project's files (`BASE.VAR` among
 /// `names`).
-fn in_bases(base: &str, var: &str, names: &std::collections::HashSet<String>) -> bool {
+fn in_bases(
+    base: &str,
+    var: &str,
+    names: &std::collections::HashSet<String>,
+    declared: &std::collections::HashSet<String>,
+) -> bool {
     PROJECT_BASES.with(|p| {
         let p = p.borrow();
         let mut b = base.to_string();
@@ -324,6 +329,12 @@ fn in_bases(base: &str, var: &str, names: &std::collections::HashSet<String>) ->
                 return false;
             }
             if names.contains(&format!("{b}.{var}")) {
+                return true;
+            }
+            // a base that no file of the project declares (a library's block, E0330 at the
+            // EXTENDS): `_logger.M()` may name any of its variables, and E0330 is the one cause
+            // (known once the other files' names are, `names` not empty: the file's parse again)
+            if !names.is_empty() && !names.contains(&b) && !declared.contains(&b) {
                 return true;
             }
             match p.get(&b) {
@@ -338,7 +349,8 @@ fn in_bases(base: &str, var: &str, names: &std::collections::HashSet<String>) ->
 /// CODESYS and TwinCAT qualify a library's names with the library's namespace (`t : Standard.TON;`,
 /// `x := Util.F(1);`). A qualifier naming a library ladderc provides ([`PROVIDED_LIBRARIES`]) is
 /// dropped (blanked: positions stay). Any other qualifier where it can only name a library (a type
-/// after `:` or `OF` in a VAR block or a TYPE declaration, a call `Lib.F(...)` in a body) whose name is no variable, POU or
+/// after `:` or `OF` in a VAR block or a TYPE declaration, a call `Lib.F(...)` or an enumeration's
+/// value `Lib.E.V` in a body) whose name is no variable, POU or
 /// type of the file is E1032, once per library (an error of the parse stage: the checks that would
 /// report each use as an unknown type or function do not run), and its uses are renamed `__...`.
 /// `None`: nothing to change.
@@ -467,7 +479,7 @@ pub(super) fn library_qualifiers(
                 let o = o.borrow();
                 o.contains(&w)
                     || (!pou.is_empty() && o.contains(&format!("{pou}.{w}")))
-                    || in_bases(&base, &w, &o)
+                    || in_bases(&base, &w, &o, &declared)
             })
         {
             continue;
@@ -549,7 +561,12 @@ pub(super) fn library_qualifiers(
                     p.tok == Tok::Colon || word(src, p).eq_ignore_ascii_case("OF")
                 });
         let call_position = !in_decl && toks.get(last + 1).is_some_and(|n| n.tok == Tok::LParen);
-        if !(type_position || call_position) {
+        // `Tc2_System.E_HRESULTAdsErr.INVALIDPARM` in a body: a library's enumeration value,
+        // `<namespace>.<enumeration>.<value>` (Beckhoff Infosys, TC3 PLC, "Library namespace"),
+        // its qualifier no variable of the file nor of the project's other files (those are
+        // known when the file is parsed again): the library is the cause, as for its types
+        let value_position = !in_decl && last >= k + 4;
+        if !(type_position || call_position || value_position) {
             continue;
         }
         let name = word(src, t);
@@ -563,7 +580,12 @@ pub(super) fn library_qualifiers(
                 .with_primary_label("library qualifier")
                 .with_hint(format!(
                     "ladderc provides the standard and PLCopen blocks of Standard, Util, Tc2_Standard, SM3_Basic and Tc2_MC2 (and Tc2_System's MEMCPY, MEMMOVE, MEMSET, MEMCMP); `{}` comes from another library: give its source project with --lib, or add its POUs and types to the project",
-                    word(src, &toks[last])
+                    // (a value, `Lib.E_Enum.VALUE`: its enumeration with it)
+                    if value_position && !type_position && !call_position {
+                        toks[k + 2..=last].iter().map(|x| word(src, x)).collect::<String>()
+                    } else {
+                        word(src, &toks[last]).to_string()
+                    }
                 )),
             );
         }
