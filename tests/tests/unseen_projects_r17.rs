@@ -280,7 +280,7 @@ fn enumeration_values_are_no_numbers_in_initial_values() {
     assert_eq!(code, Some(1), "{lines:?}");
     assert_eq!(lines.len(), 1, "{lines:?}");
     assert!(
-        lines[0].starts_with("init.st:4:23: error[E0022]: constant expression `E_Mode.STOP + 1`: `STOP` names no constant with a value in the files given"),
+        lines[0].starts_with("init.st:4:23: error[E0022]: constant expression `E_Mode.STOP + 1`: `E_Mode.STOP` names no constant with a value in the files given"),
         "{lines:?}"
     );
     let dir = tempfile::tempdir().unwrap();
