@@ -565,7 +565,16 @@ pub(super) fn library_qualifiers(
         // `<namespace>.<enumeration>.<value>` (Beckhoff Infosys, TC3 PLC, "Library namespace"),
         // its qualifier no variable of the file nor of the project's other files (those are
         // known when the file is parsed again): the library is the cause, as for its types
-        let value_position = !in_decl && last >= k + 4;
+        // (not a kind after `:`, SIMATIC AX's `TASK Cyclic : Siemens.Simatic.S71500.Tasks.
+        // ProgramCycle`, E1048's; nor a `USING`/`NAMESPACE` name)
+        let value_position = !in_decl
+            && last >= k + 4
+            && !prev.is_some_and(|p| {
+                p.tok == Tok::Colon
+                    || ["USING", "NAMESPACE"]
+                        .iter()
+                        .any(|h| word(src, p).eq_ignore_ascii_case(h))
+            });
         if !(type_position || call_position || value_position) {
             continue;
         }
