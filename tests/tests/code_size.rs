@@ -53,8 +53,11 @@ fn build_move(args: &[&str]) -> (tempfile::TempDir, std::process::Output) {
 /// #16's bound for the executable (256 KB), met with the trimmed std: 199,288 B on x86-64 with gcc 12.
 const TRIMMED_LIMIT: u64 = 256_000;
 
-/// The bound with the toolchain's prebuilt std: 426,928 B on x86-64 with gcc 12.
-const FULL_STD_LIMIT: u64 = 448 * 1024;
+/// The bound with the toolchain's prebuilt std: 426,928 B on x86-64 with gcc 12 (2026-12-03), 459,744 B
+/// with the toolchain of 2026-12-07 (its std grew; the program and runtime parts did not: 775 B and
+/// 34,578 B both days). A machine without rust-src (rustup's default profile has none) builds this one:
+/// the bound leaves that growth room, #16's 256 KB stays the trimmed build's bound.
+const FULL_STD_LIMIT: u64 = 512 * 1024;
 
 /// Everything but the motion library's own sections, with the trimmed std: the program, ladderc's runtime
 /// and the executable's headers, tables and libc glue (README, "Code size for controllers").
@@ -62,8 +65,9 @@ const TRIMMED_REST_LIMIT: u64 = 64 * 1024;
 
 /// The same with the prebuilt std, which links more of libc dynamically: 67,989 B on x86-64 with gcc 12
 /// (a machine without rust-src, 2026-12-03), where the trimmed build stays under 64 KiB. Without this
-/// bound `cargo test --workspace` failed on every machine without the rust-src component.
-const FULL_STD_REST_LIMIT: u64 = 72 * 1024;
+/// bound `cargo test --workspace` failed on every machine without the rust-src component. 72,062 B with
+/// the toolchain of 2026-12-07, so the bound keeps some room for the next one.
+const FULL_STD_REST_LIMIT: u64 = 80 * 1024;
 
 #[test]
 fn a_one_block_program_is_small_and_its_report_says_where_the_bytes_are() {
