@@ -78,7 +78,10 @@ impl<'d> StLowering<'d> {
     /// The ST lowering for `pou`'s chart: every step is declared as a variable with `.X` and `.T`, every
     /// action with `.Q` and `.A`, so ST bodies can read them.
     pub fn new(decls: &'d Declarations, pou: &Pou, steps: &[String], actions: &[String]) -> Self {
-        let mut low = PouLowering::new(decls, pou);
+        // its labels and temporaries are `_SFC_ST_...`: the POU's own ST actions and methods,
+        // lowered on their own and inlined beside the chart's code, have `_ST_...` ones (a
+        // condition reading a property needs a temporary: round 32, before none did)
+        let mut low = PouLowering::new(decls, pou).with_prefix("_SFC_ST_");
         let span = pou.span;
         for s in steps {
             low.declare(s, TypeRef::Named(Ident::new(STEP_TYPE, span)));
