@@ -157,3 +157,26 @@ fn super_runs_the_chart_of_a_base_two_levels_up() {
     assert_eq!(column(&trace, "main.kb"), [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
     assert_eq!(column(&trace, "main.k"), column(&trace, "main.kb"));
 }
+
+/// A method with a result that calls itself (Resi4MPM's `METHOD GetExpression : IExpression`
+/// calling `THIS^.GetExpression(...)` for the operands of the expression it builds) is the
+/// documented E0106 (ladderc keeps a method's variables once per instance), one per call, at the
+/// call; before round 32 the call was read as a call of the method's result variable: E1018
+/// "`GetExpression` is IExpression, not an FB instance".
+#[test]
+fn a_method_calling_itself_for_its_result_is_e0106_at_the_call() {
+    let src = "FUNCTION_BLOCK Calc\nMETHOD Fact : DINT\nVAR_INPUT n : DINT; END_VAR\n\
+               IF n <= 1 THEN Fact := 1; ELSE Fact := n * THIS^.Fact(n - 1); END_IF;\n\
+               END_METHOD\nEND_FUNCTION_BLOCK\n\
+               PROGRAM main\nVAR c : Calc; r : DINT; END_VAR\nr := c.Fact(4);\nEND_PROGRAM\n";
+    let (code, lines) = common::check_text("rec.st", src);
+    assert_eq!(code, Some(1), "{lines:?}");
+    assert_eq!(lines.len(), 1, "{lines:?}");
+    assert!(
+        lines[0].starts_with(
+            "rec.st:4:44: error[E0106]: method `Fact` calls itself (directly or through another \
+             method)"
+        ),
+        "{lines:?}"
+    );
+}

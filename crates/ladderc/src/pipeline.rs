@@ -2098,16 +2098,16 @@ fn declare_hidden(p: &mut il_frontend::ast::Pou, hidden: Vec<il_frontend::ast::V
     }
 }
 
+/// The lowered actions of each block with their diagnostics, by block name (upper case).
+type OwnActions = std::collections::HashMap<String, (ActionBodies, Vec<diagnostics::Diagnostic>)>;
+
 /// `SUPER^()` of a block's method (the body of a middle level of a chain, `SUPER^()` of a base
 /// two levels up whose body is a chart, Resi4MPM's `ControlPrimitiveBase`): as in the body
 /// ([`super_charts`]), its chart variables the block's. Before round 32: E1019 `__C000`.
 fn method_super_charts(
     units: &mut [CompilationUnit],
     pending: &[il_frontend::st::file::PendingBody],
-    (by_name, own): (
-        &std::collections::HashMap<String, usize>,
-        &std::collections::HashMap<String, (ActionBodies, Vec<diagnostics::Diagnostic>)>,
-    ),
+    (by_name, own): (&std::collections::HashMap<String, usize>, &OwnActions),
     index: &ladder_compiler::project::Index,
     map: &diagnostics::SourceMap,
     diags: &mut diagnostics::Diagnostics,

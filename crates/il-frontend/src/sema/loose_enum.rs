@@ -6,8 +6,10 @@
 //! TwinCAT convert between an enumeration and an integer implicitly unless the type is declared
 //! under `{attribute 'strict'}` (their DUT editor adds it; older code and libraries such as Struckig
 //! have none). ladderc does so, with one W1439 per POU; a strict enumeration keeps IEC's rule,
-//! except that its value is stored into an integer that holds every value (Beckhoff Infosys,
-//! "Attribute 'strict'": compile errors for arithmetic and for storing into the enumeration only).
+//! except that its value is stored into an integer (or a real) that holds every value and is
+//! compared with one (Beckhoff Infosys, "Attribute 'strict'": compile errors for arithmetic and for
+//! storing into the enumeration only). Beside an integer or a real that holds every value the
+//! enumerated value counts as that type (`u = E.a` of a UINT).
 //!
 //! Input: the types an assignment, an input or a generic function (comparison, arithmetic) sees.
 //! Output: whether they meet through the enumeration's number, and W1439 once per POU. Invariant:

@@ -3845,6 +3845,9 @@ fn lower_method_as(
     rename.extend(rename_back);
     // `THIS^.Hash(k)` where the method declares `Hash : DWORD`: the call stays the block's method
     let methods = decls.methods.get(&p.name.key());
+    // (and `THIS^.GetExpression(...)` inside `METHOD GetExpression : IExpression`: the method
+    // itself, not its result, so a recursive call is the E0106 that says so; round 32, before:
+    // E1018 "`GetExpression` is IExpression, not an FB instance")
     let calls_kept = m
         .blocks
         .iter()
@@ -3852,6 +3855,12 @@ fn lower_method_as(
         .filter(|v| methods.is_some_and(|ms| ms.iter().any(|s| v.name.is(&s.name))))
         .filter(|v| !matches!(&v.ty, crate::ast::TypeRef::Named(t) if decls.pou(&t.name).is_some()))
         .map(|v| v.name.key())
+        .chain(
+            m.ret
+                .as_ref()
+                .filter(|r| !matches!(&r.ty, crate::ast::TypeRef::Named(t) if decls.pou(&t.name).is_some()))
+                .map(|_| m.name.key()),
+        )
         .collect();
     crate::rename::Renames {
         bases: rename,

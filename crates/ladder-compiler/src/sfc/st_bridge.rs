@@ -8,7 +8,9 @@
 //! [`crate::il_body::embedded_text`], byte `k` of the text is byte `base + k` of the file); the ST
 //! lowering sees every step as a variable of a struct type with `X : BOOL` and `T : TIME`, and every
 //! named action with `Q`/`A : BOOL`, so `Step.X` type-checks; the SFC renaming pass then maps them to
-//! the hidden chart variables.
+//! the hidden chart variables. Its labels and temporaries start with `_SFC_ST_` (the POU's own ST
+//! actions, inlined beside the chart, have `_ST_` ones); a condition that reads a PROPERTY is
+//! lowered as a statement into such a temporary (`il_frontend::st::PouLowering::condition`).
 
 use crate::context::Ctx;
 use crate::project::Index;

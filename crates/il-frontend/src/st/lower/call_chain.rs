@@ -317,7 +317,8 @@ impl PouLowering<'_> {
     }
 
     /// When the block `callee` (`a.Child.Kid`) calls a method of is a PROPERTY's value
-    /// (`a.Child`), that value goes into a temporary first (`T REF= a.Child;` for a `REFERENCE
+    /// (`a.Child`, or what a POINTER TO property points to, `a.PtrChild^.Kid`), that value goes
+    /// into a temporary first (`T REF= a.Child;` for a `REFERENCE
     /// TO`, `T := a.Child;` otherwise; the property's getter runs there) and `callee` becomes
     /// `T.Kid`.
     pub(super) fn property_holder(&mut self, callee: &mut Place, calls: &mut Vec<Stmt>) {
