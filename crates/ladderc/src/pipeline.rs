@@ -2036,6 +2036,9 @@ fn lower_textual_sfc(
             }
         }
     }
+    if !by_name.is_empty() {
+        method_super_charts(units, pending, (&by_name, &own), &index, map, diags);
+    }
 }
 
 /// The lowered bodies of a POU's actions, by action name (upper case).
@@ -2060,10 +2063,123 @@ fn super_charts(
     map: &diagnostics::SourceMap,
     diags: &mut diagnostics::Diagnostics,
 ) {
-    use il_frontend::ast::{IlStmt, InstrKind, Instruction, VarBlock};
+    let body = std::mem::take(&mut p.body);
+    let mut next = 0;
+    let (body, hidden) = chart_scans(
+        (p, body, (["__SFCS", "__SFCA"], &mut next)),
+        pending,
+        (by_name, actions),
+        index,
+        map,
+        diags,
+    );
+    p.body = body;
+    declare_hidden(p, hidden);
+}
+
+/// The chart variables `hidden` that `p` does not declare yet, declared (a block whose body and
+/// method both run the base's chart has one set).
+fn declare_hidden(p: &mut il_frontend::ast::Pou, hidden: Vec<il_frontend::ast::VarDecl>) {
+    let declared = |p: &il_frontend::ast::Pou, n: &il_frontend::ast::Ident| {
+        p.var_blocks
+            .iter()
+            .flat_map(|b| b.vars.iter())
+            .any(|v| v.name.key() == n.key())
+    };
+    let new: Vec<_> = hidden
+        .into_iter()
+        .filter(|v| !declared(p, &v.name))
+        .collect();
+    if !new.is_empty() {
+        let end = p.name.span.end as usize;
+        let span = diagnostics::Span::new(p.name.span.file, end, end);
+        p.var_blocks
+            .push(il_frontend::ast::VarBlock::locals(new, span));
+    }
+}
+
+/// The lowered actions of each block with their diagnostics, by block name (upper case).
+type OwnActions = std::collections::HashMap<String, (ActionBodies, Vec<diagnostics::Diagnostic>)>;
+
+/// `SUPER^()` of a block's method (the body of a middle level of a chain, `SUPER^()` of a base
+/// two levels up whose body is a chart, Resi4MPM's `ControlPrimitiveBase`): as in the body
+/// ([`super_charts`]), its chart variables the block's. Before round 32: E1019 `__C000`.
+fn method_super_charts(
+    units: &mut [CompilationUnit],
+    pending: &[il_frontend::st::file::PendingBody],
+    (by_name, own): (&std::collections::HashMap<String, usize>, &OwnActions),
+    index: &ladder_compiler::project::Index,
+    map: &diagnostics::SourceMap,
+    diags: &mut diagnostics::Diagnostics,
+) {
+    use il_frontend::ast::LibraryElement;
+    let runs_chart = |a: &il_frontend::ast::Action| {
+        a.method_inputs.is_some() && !chart_bases(&a.body).is_empty()
+    };
+    let owners: std::collections::HashSet<String> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|i| match i {
+            LibraryElement::Action(a) if runs_chart(a) => Some(a.pou.key()),
+            _ => None,
+        })
+        .collect();
+    if owners.is_empty() {
+        return;
+    }
+    let blocks: std::collections::HashMap<String, il_frontend::ast::Pou> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|i| match i {
+            LibraryElement::Pou(p) if owners.contains(&p.name.key()) => {
+                Some((p.name.key(), p.clone()))
+            }
+            _ => None,
+        })
+        .collect();
+    let mut hidden: std::collections::HashMap<String, Vec<il_frontend::ast::VarDecl>> =
+        std::collections::HashMap::new();
+    let mut labels: std::collections::HashMap<String, usize> = std::collections::HashMap::new();
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        let LibraryElement::Action(a) = item else {
+            continue;
+        };
+        if !runs_chart(a) {
+            continue;
+        }
+        let Some(p) = blocks.get(&a.pou.key()) else {
+            continue;
+        };
+        let body = std::mem::take(&mut a.body);
+        let acts = own.get(&p.name.key()).map(|(acts, _)| acts);
+        // (labels of their own: the method is inlined where the block calls it)
+        let next = labels.entry(a.pou.key()).or_insert(0);
+        let (body, vars) = chart_scans(
+            (p, body, (["__SFCM", "__SFCMA"], next)),
+            pending,
+            (by_name, acts),
+            index,
+            map,
+            diags,
+        );
+        a.body = body;
+        hidden.entry(a.pou.key()).or_default().extend(vars);
+    }
+    for item in units.iter_mut().flat_map(|u| u.items.iter_mut()) {
+        if let LibraryElement::Pou(p) = item {
+            if let Some(vars) = hidden.remove(&p.name.key()) {
+                declare_hidden(p, vars);
+            }
+        }
+    }
+}
+
+/// The bases whose chart `body` runs (`CAL __SUPER_SFC_<base>`), each once.
+fn chart_bases(body: &[il_frontend::ast::IlStmt]) -> Vec<String> {
+    use il_frontend::ast::{IlStmt, InstrKind, Instruction};
     use il_frontend::st::file::SUPER_CHART_CALL;
     let mut bases: Vec<String> = Vec::new();
-    for s in &p.body {
+    for s in body {
         if let IlStmt::Instr(Instruction {
             kind: InstrKind::Call { instance, .. },
             ..
@@ -2076,8 +2192,36 @@ fn super_charts(
             }
         }
     }
+    bases
+}
+
+/// `body` (of block `p` or of one of its methods) with each `CAL __SUPER_SFC_<base>` replaced by
+/// one scan of the base's chart, and the chart variables it needs; `tag`: the label prefixes of
+/// the chart's copies and of its actions' copies, numbered by `next`.
+#[allow(clippy::type_complexity)]
+fn chart_scans(
+    (p, body, (tag, next)): (
+        &il_frontend::ast::Pou,
+        Vec<il_frontend::ast::IlStmt>,
+        ([&str; 2], &mut usize),
+    ),
+    pending: &[il_frontend::st::file::PendingBody],
+    (by_name, actions): (
+        &std::collections::HashMap<String, usize>,
+        Option<&ActionBodies>,
+    ),
+    index: &ladder_compiler::project::Index,
+    map: &diagnostics::SourceMap,
+    diags: &mut diagnostics::Diagnostics,
+) -> (
+    Vec<il_frontend::ast::IlStmt>,
+    Vec<il_frontend::ast::VarDecl>,
+) {
+    use il_frontend::ast::IlStmt;
+    use il_frontend::st::file::SUPER_CHART_CALL;
+    let bases = chart_bases(&body);
     if bases.is_empty() {
-        return;
+        return (body, Vec::new());
     }
     let mut calls: std::collections::HashMap<String, Vec<IlStmt>> =
         std::collections::HashMap::new();
@@ -2117,33 +2261,15 @@ fn super_charts(
             code,
         );
     }
-    let mut next = 0;
-    p.body = il_frontend::actions::inline_calls(
-        std::mem::take(&mut p.body),
-        &calls,
-        &|_| false,
-        "__SFCS",
-        &mut next,
-        diags,
-    );
+    let mut body =
+        il_frontend::actions::inline_calls(body, &calls, &|_| false, tag[0], next, diags);
     // the chart's `CAL Act` of the block's actions (the base's, which it inherits)
     if let Some(acts) = actions {
         let is_var = il_frontend::actions::declares(p);
-        p.body = il_frontend::actions::inline_calls(
-            std::mem::take(&mut p.body),
-            acts,
-            &is_var,
-            "__SFCA",
-            &mut next,
-            diags,
-        );
+        body = il_frontend::actions::inline_calls(body, acts, &is_var, tag[1], next, diags);
     }
-    ladder_compiler::sfc::rename_step_flags(&mut p.body, &steps);
-    if !hidden_all.is_empty() {
-        let end = p.name.span.end as usize;
-        let span = diagnostics::Span::new(p.name.span.file, end, end);
-        p.var_blocks.push(VarBlock::locals(hidden_all, span));
-    }
+    ladder_compiler::sfc::rename_step_flags(&mut body, &steps);
+    (body, hidden_all)
 }
 
 /// The error of a file that is neither in memory nor to be read from the file system.

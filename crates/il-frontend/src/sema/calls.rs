@@ -157,28 +157,50 @@ impl Body<'_, '_> {
         // value does not fit INT (W1439)
         // (beside a bit string, as that bit string: `nFlags AND E_State.eA`, `d = eFlags` of a
         // DWORD `d`)
-        let bit_string = known
+        // (beside another integer or a real, as that type when it holds every value: `u = E.a`
+        // of a UINT `u`, `r = E.a` of an LREAL `r`; a bit string first, then a real, then the
+        // widest integer)
+        let beside = known
             .iter()
             .filter_map(|k| k.0.elementary())
-            .filter(|e| e.is_bit() && *e != Elementary::Bool)
-            .max_by_key(|e| e.size_bytes());
+            .filter(|e| (e.is_bit() && *e != Elementary::Bool) || e.is_integer() || e.is_real())
+            .max_by_key(|e| {
+                let rank = if e.is_bit() {
+                    2
+                } else {
+                    u32::from(e.is_real())
+                };
+                (rank, e.size_bytes())
+            });
+        // (a strict enumeration only compared with a number that holds its values: `strict`
+        // forbids arithmetic and storing into the enumeration, not comparing, Infosys
+        // "Attribute 'strict'")
+        let compared = super::bit_arith::is_comparison(f.name);
+        let counts_as_number = |t: &Type| {
+            super::loose_enum::is_loose(&self.a.model, t)
+                || (compared
+                    && beside.is_some_and(|b| {
+                        super::loose_enum::type_beside(&self.a.model, t, b, true).is_some()
+                    }))
+        };
         if matches!(
             class,
             Class::Any | Class::AnyElementary | Class::AnyNum | Class::AnyInt | Class::AnyBit
-        ) && known
-            .iter()
-            .any(|k| super::loose_enum::is_loose(&self.a.model, &k.0))
+        ) && known.iter().any(|k| counts_as_number(&k.0))
             && (known.iter().any(|k| k.0.is_integer())
-                || bit_string.is_some()
+                || beside.is_some()
                 || lit_args.iter().any(|(v, _)| !self.lits.is_real(*v)))
         {
             let mut first = None;
             for (t, span) in known.iter_mut() {
-                if super::loose_enum::is_loose(&self.a.model, t) {
+                let beside_type = beside
+                    .and_then(|b| super::loose_enum::type_beside(&self.a.model, t, b, compared));
+                if let Some(b) = beside_type {
                     first.get_or_insert((t.clone(), *span));
-                    *t = bit_string
-                        .and_then(|b| super::loose_enum::bit_string_type(&self.a.model, t, b))
-                        .unwrap_or_else(|| super::loose_enum::number_type(&self.a.model, t));
+                    *t = b;
+                } else if super::loose_enum::is_loose(&self.a.model, t) {
+                    first.get_or_insert((t.clone(), *span));
+                    *t = super::loose_enum::number_type(&self.a.model, t);
                 }
             }
             if let Some((t, span)) = first {

@@ -6,8 +6,10 @@
 //! TwinCAT convert between an enumeration and an integer implicitly unless the type is declared
 //! under `{attribute 'strict'}` (their DUT editor adds it; older code and libraries such as Struckig
 //! have none). ladderc does so, with one W1439 per POU; a strict enumeration keeps IEC's rule,
-//! except that its value is stored into an integer that holds every value (Beckhoff Infosys,
-//! "Attribute 'strict'": compile errors for arithmetic and for storing into the enumeration only).
+//! except that its value is stored into an integer (or a real) that holds every value and is
+//! compared with one (Beckhoff Infosys, "Attribute 'strict'": compile errors for arithmetic and for
+//! storing into the enumeration only). Beside an integer or a real that holds every value the
+//! enumerated value counts as that type (`u = E.a` of a UINT).
 //!
 //! Input: the types an assignment, an input or a generic function (comparison, arithmetic) sees.
 //! Output: whether they meet through the enumeration's number, and W1439 once per POU. Invariant:
@@ -72,11 +74,52 @@ fn bit_string_range(t: Elementary) -> Option<(i128, i128)> {
     Some((0, (1i128 << bits) - 1))
 }
 
-/// The bit string a loose enumeration `t` counts as beside the bit string `other` (`nFlags AND
-/// E_State.eUnknown` of a DWORD: Infosys, SA0058's example): `other`, when it holds every value.
-pub(super) fn bit_string_type(model: &Model, t: &Type, other: Elementary) -> Option<Type> {
-    let (lo, hi) = bit_string_range(other)?;
-    loose_values(model, t)?
+/// The integers a real type holds exactly: up to 2^24 in magnitude (REAL), 2^53 (LREAL).
+fn exact_integer_range(t: Elementary) -> Option<(i128, i128)> {
+    let bits = match t {
+        Elementary::Real => 24,
+        Elementary::Lreal => 53,
+        _ => return None,
+    };
+    Some((-(1i128 << bits), 1i128 << bits))
+}
+
+/// The values `t` holds as numbers: an integer's range, a bit string's unsigned range, the
+/// integers a real holds exactly; `None` for every other type.
+fn number_range(t: Elementary) -> Option<(i128, i128)> {
+    if t.is_integer() {
+        t.int_range()
+    } else if t.is_real() {
+        exact_integer_range(t)
+    } else {
+        bit_string_range(t)
+    }
+}
+
+/// The type a loose enumeration `t` counts as beside a value of the elementary type `other`: an
+/// integer (`IF m_primitiveId = E_Ids.empty` of a UINT, `CASE nType OF E_Type.white:`), a real
+/// (`GetNumeric(i) = E_Modes.automatic` of an LREAL) or a bit string (`nFlags AND
+/// E_State.eUnknown` of a DWORD: Infosys, SA0058's example): `other`, when it holds every value
+/// the enumeration declares (TwinCAT and CODESYS convert its number implicitly, as an integer
+/// of its base type, Infosys "Attribute 'strict'").
+///
+/// `compared`: `t` is compared with that value (`=`, `<>`, `<`..., a CASE label): then a strict
+/// enumeration counts so too, as `{attribute 'strict'}` makes errors only of arithmetic and of
+/// storing other values into the enumeration (Infosys "Attribute 'strict'"; x-PPU's
+/// `IF prevStepIdx = ESpecialStepIds.unset` of an INT under `strict`).
+pub(super) fn type_beside(
+    model: &Model,
+    t: &Type,
+    other: Elementary,
+    compared: bool,
+) -> Option<Type> {
+    let (lo, hi) = number_range(other)?;
+    let values = if compared {
+        enum_values(model, t)
+    } else {
+        loose_values(model, t)
+    };
+    values?
         .iter()
         .all(|(_, v)| lo <= *v && *v <= hi)
         .then_some(Type::Elementary(other))
@@ -96,6 +139,15 @@ pub(super) fn assignable_loose(model: &Model, from: &Type, to: &Type) -> bool {
         if let Some((lo, hi)) = range {
             return values.iter().all(|(_, v)| lo <= *v && *v <= hi);
         }
+    }
+    // also into a real that holds each value exactly (`rValue := E_Type.white;` of an LREAL:
+    // its base integer widens to LREAL in TwinCAT, x-PPU's `Value.Numeric`; a strict one too,
+    // as into an integer)
+    if let (Some(values), Some((lo, hi))) = (
+        enum_values(model, from),
+        to.elementary().and_then(exact_integer_range),
+    ) {
+        return values.iter().all(|(_, v)| lo <= *v && *v <= hi);
     }
     if let (Some(f), true) = (from.elementary(), is_loose(model, to)) {
         return f.is_integer() && widens(f, Elementary::Dint);
@@ -121,7 +173,7 @@ impl Body<'_, '_> {
             .hint(if loose {
                 format!("compiled as CODESYS and TwinCAT do for an enumeration without {{attribute 'strict'}} (its number); convert with TO_DINT or declare the variable {n} for another IEC compiler")
             } else {
-                format!("an array index or a value stored into an integer: CODESYS and TwinCAT use the number of {n} so, also under {{attribute 'strict'}} (it forbids arithmetic and storing other values into the enumeration); write TO_DINT(...) for another IEC compiler")
+                format!("an array index, a value stored into a number or compared with one: CODESYS and TwinCAT use the number of {n} so, also under {{attribute 'strict'}} (it forbids arithmetic and storing other values into the enumeration); write TO_DINT(...) for another IEC compiler")
             });
     }
 }

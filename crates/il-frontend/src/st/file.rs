@@ -3162,7 +3162,11 @@ pub fn compile_pending(
                     if let Some(a) = lower_instance_init(pb.method_file(k), &decls, p, m) {
                         standalone.push(a);
                     }
-                    if let Some(mut a) = lower_method(pb.method_file(k), &decls, p, m, diags) {
+                    // (`SUPER^()` in a middle level's body, a hidden method here: its base's
+                    // chart; round 32, before: E1019 `__C000` unknown)
+                    let file = pb.method_file(k);
+                    let lowered = lower_method_as(file, &decls, p, m, (None, &super_charts), diags);
+                    if let Some(mut a) = lowered {
                         if !init.is_empty() {
                             let tag = format!("__ITF{k}_");
                             let mut body = crate::actions::instantiate(&init, &tag, a.name.span);
@@ -3698,7 +3702,7 @@ pub fn lower_method(
     m: &PendingMethod,
     diags: &mut Diagnostics,
 ) -> Option<crate::ast::Action> {
-    lower_method_as(file, decls, p, m, None, diags)
+    lower_method_as(file, decls, p, m, (None, &[]), diags)
 }
 
 /// The hidden method that computes the VAR_INST initial values of method `m` (its
@@ -3734,7 +3738,7 @@ pub fn lower_instance_init(
         m.name.span,
     );
     let mut quiet = Diagnostics::new();
-    let a = lower_method_as(file, decls, p, &only, Some(&name), &mut quiet);
+    let a = lower_method_as(file, decls, p, &only, (Some(&name), &[]), &mut quiet);
     if quiet.has_errors() {
         return None;
     }
@@ -3742,13 +3746,18 @@ pub fn lower_instance_init(
 }
 
 /// [`lower_method`], the action named `action` (default: the method's name; the method's variables
-/// keep the method's hidden names either way).
+/// keep the method's hidden names either way); `il_actions`: the block's actions already IL that
+/// the method may call (the hidden actions `SUPER^()` of a chart base calls, `super_chart_call`:
+/// the body of a middle level of a chain, a hidden method, runs its base's chart).
 fn lower_method_as(
     file: FileId,
     decls: &super::Declarations,
     p: &mut crate::ast::Pou,
     m: &PendingMethod,
-    action: Option<&crate::ast::Ident>,
+    (action, il_actions): (
+        Option<&crate::ast::Ident>,
+        &[(crate::ast::Ident, Vec<crate::IlStmt>)],
+    ),
     diags: &mut Diagnostics,
 ) -> Option<crate::ast::Action> {
     use crate::actions::{instantiate, method_result, method_var};
@@ -3793,6 +3802,9 @@ fn lower_method_as(
         add_local_fb_inits(m, &mut stmts);
     }
     let mut low = super::PouLowering::new(decls, &view);
+    if !il_actions.is_empty() {
+        low.set_il_actions(il_actions.to_vec());
+    }
     // its REFERENCE TO variables that start again at each call (not VAR_INST, not VAR_STAT)
     low.per_call_refs = m
         .blocks
@@ -3833,6 +3845,9 @@ fn lower_method_as(
     rename.extend(rename_back);
     // `THIS^.Hash(k)` where the method declares `Hash : DWORD`: the call stays the block's method
     let methods = decls.methods.get(&p.name.key());
+    // (and `THIS^.GetExpression(...)` inside `METHOD GetExpression : IExpression`: the method
+    // itself, not its result, so a recursive call is the E0106 that says so; round 32, before:
+    // E1018 "`GetExpression` is IExpression, not an FB instance")
     let calls_kept = m
         .blocks
         .iter()
@@ -3840,6 +3855,12 @@ fn lower_method_as(
         .filter(|v| methods.is_some_and(|ms| ms.iter().any(|s| v.name.is(&s.name))))
         .filter(|v| !matches!(&v.ty, crate::ast::TypeRef::Named(t) if decls.pou(&t.name).is_some()))
         .map(|v| v.name.key())
+        .chain(
+            m.ret
+                .as_ref()
+                .filter(|r| !matches!(&r.ty, crate::ast::TypeRef::Named(t) if decls.pou(&t.name).is_some()))
+                .map(|_| m.name.key()),
+        )
         .collect();
     crate::rename::Renames {
         bases: rename,

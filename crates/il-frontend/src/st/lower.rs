@@ -657,7 +657,31 @@ impl<'d> PouLowering<'d> {
         self.poisoned = false;
         self.types.get_mut().clear();
         let own = self.own_names_dropped_expr(e);
-        self.cond_value(own.as_ref().unwrap_or(e), "condition", &mut out, diags);
+        let e = own.as_ref().unwrap_or(e);
+        let reads_property =
+            self.properties && super::property::reads_any(&self.env(), &self.methods, e);
+        if reads_property || call_chain::expr_has_chain(e) {
+            // `m_ptrPanelMgr^.Start` (a PROPERTY), `stack.Get(1).Ready` as an SFC transition's
+            // condition: the statement rewrites (getter calls, call chains) need a statement, so
+            // the condition is `T := e;` lowered as any statement, then `LD T`
+            let span = e.span;
+            let t = self.temp(named("BOOL", span), span);
+            let assign = Stmt {
+                kind: StmtKind::Assign {
+                    target: Place {
+                        base: PlaceBase::Name(t.clone()),
+                        accessors: Vec::new(),
+                        span,
+                    },
+                    value: e.clone(),
+                },
+                span,
+            };
+            self.stmt(&assign, &mut out, diags);
+            out.push(ld(var_operand(&t), span));
+        } else {
+            self.cond_value(e, "condition", &mut out, diags);
+        }
         self.types.get_mut().clear();
         out
     }

@@ -387,6 +387,21 @@ pub(super) fn rewrite(
     r.changed.then_some((r.calls, rest))
 }
 
+/// Whether expression `e` reads a property (an SFC transition's condition is lowered as a
+/// statement then, so that [`rewrite`] runs the getters first).
+pub(super) fn reads_any(env: &Env<'_>, own: &HashMap<String, MethodSig>, e: &Expr) -> bool {
+    let mut diags = Diagnostics::new();
+    let r = Rewriter {
+        env,
+        own,
+        calls: Vec::new(),
+        in_place: false,
+        changed: false,
+        diags: &mut diags,
+    };
+    r.reads_property(e)
+}
+
 fn field(name: String, span: Span) -> Accessor {
     Accessor::Field(Ident::new(name, span))
 }

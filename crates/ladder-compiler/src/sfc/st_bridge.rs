@@ -8,7 +8,9 @@
 //! [`crate::il_body::embedded_text`], byte `k` of the text is byte `base + k` of the file); the ST
 //! lowering sees every step as a variable of a struct type with `X : BOOL` and `T : TIME`, and every
 //! named action with `Q`/`A : BOOL`, so `Step.X` type-checks; the SFC renaming pass then maps them to
-//! the hidden chart variables.
+//! the hidden chart variables. Its labels and temporaries start with `_SFC_ST_` (the POU's own ST
+//! actions, inlined beside the chart, have `_ST_` ones); a condition that reads a PROPERTY is
+//! lowered as a statement into such a temporary (`il_frontend::st::PouLowering::condition`).
 
 use crate::context::Ctx;
 use crate::project::Index;
@@ -78,7 +80,10 @@ impl<'d> StLowering<'d> {
     /// The ST lowering for `pou`'s chart: every step is declared as a variable with `.X` and `.T`, every
     /// action with `.Q` and `.A`, so ST bodies can read them.
     pub fn new(decls: &'d Declarations, pou: &Pou, steps: &[String], actions: &[String]) -> Self {
-        let mut low = PouLowering::new(decls, pou);
+        // its labels and temporaries are `_SFC_ST_...`: the POU's own ST actions and methods,
+        // lowered on their own and inlined beside the chart's code, have `_ST_...` ones (a
+        // condition reading a property needs a temporary: round 32, before none did)
+        let mut low = PouLowering::new(decls, pou).with_prefix("_SFC_ST_");
         let span = pou.span;
         for s in steps {
             low.declare(s, TypeRef::Named(Ident::new(STEP_TYPE, span)));

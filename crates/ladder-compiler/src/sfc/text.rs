@@ -70,6 +70,25 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
             LibraryElement::Action(_) => {}
         }
     }
+    // the methods of function blocks (property accessors too: `p^.Start` in a transition's
+    // condition calls `Start`'s Get accessor), as the ST lowering of conditions and actions
+    // needs them; before round 32 none, so a property read there was E1011
+    let blocks: std::collections::HashMap<String, &Pou> = units
+        .iter()
+        .flat_map(|u| u.items.iter())
+        .filter_map(|item| match item {
+            LibraryElement::Pou(p) => Some((p.name.key(), p)),
+            _ => None,
+        })
+        .collect();
+    for item in units.iter().flat_map(|u| u.items.iter()) {
+        if let LibraryElement::Action(a) = item {
+            if let Some(inputs) = &a.method_inputs {
+                let sig = method_sig(a, inputs, blocks.get(&a.pou.key()).copied());
+                index.method_sigs.entry(a.pou.key()).or_default().push(sig);
+            }
+        }
+    }
     // the actions of programs and function blocks (`ACTIONS` blocks after the POU, CODESYS and
     // TwinCAT), which a chart names in its associations
     for item in units.iter().flat_map(|u| u.items.iter()) {
@@ -83,6 +102,39 @@ pub fn index_of_units(units: &[CompilationUnit]) -> Index {
         }
     }
     index
+}
+
+/// The interface of method `a` of a block (`inputs`: its VAR_INPUT and VAR_IN_OUT names), read
+/// from the hidden variables its block got for it (`__M_<METHOD>_<var>`, result `__M_<METHOD>`).
+fn method_sig(
+    a: &il_frontend::ast::Action,
+    inputs: &[il_frontend::ast::Ident],
+    block: Option<&Pou>,
+) -> il_frontend::st::types::MethodSig {
+    use il_frontend::actions::{method_result, method_var};
+    let declared = |name: &str, kind: Option<VarKind>| {
+        block.is_some_and(|p| {
+            p.var_blocks
+                .iter()
+                .filter(|b| kind.is_none_or(|k| b.kind == k))
+                .flat_map(|b| b.vars.iter())
+                .any(|v| v.name.name.eq_ignore_ascii_case(name))
+        })
+    };
+    let names = |xs: &[il_frontend::ast::Ident]| xs.iter().map(|i| i.name.clone()).collect();
+    il_frontend::st::types::MethodSig {
+        name: a.name.name.clone(),
+        inputs: names(inputs),
+        in_outs: inputs
+            .iter()
+            .filter(|i| declared(&method_var(&a.name.name, &i.name), Some(VarKind::InOut)))
+            .map(|i| i.name.clone())
+            .collect(),
+        constant_in_outs: Vec::new(),
+        outputs: names(&a.method_outputs),
+        returns: declared(&method_result(&a.name.name), None),
+        overloaded: false,
+    }
 }
 
 /// An element holding `src[r]` as its text (an `<ST>` or `<IL>` body).

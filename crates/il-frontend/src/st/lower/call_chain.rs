@@ -317,7 +317,8 @@ impl PouLowering<'_> {
     }
 
     /// When the block `callee` (`a.Child.Kid`) calls a method of is a PROPERTY's value
-    /// (`a.Child`), that value goes into a temporary first (`T REF= a.Child;` for a `REFERENCE
+    /// (`a.Child`, or what a POINTER TO property points to, `a.PtrChild^.Kid`), that value goes
+    /// into a temporary first (`T REF= a.Child;` for a `REFERENCE
     /// TO`, `T := a.Child;` otherwise; the property's getter runs there) and `callee` becomes
     /// `T.Kid`.
     pub(super) fn property_holder(&mut self, callee: &mut Place, calls: &mut Vec<Stmt>) {
@@ -325,12 +326,18 @@ impl PouLowering<'_> {
         if n < 2 {
             return;
         }
-        let Accessor::Field(prop) = &callee.accessors[n - 2] else {
+        // `a.Child.Kid`, or `a.PtrChild^.Kid` with `PROPERTY PtrChild : POINTER TO ...` (TwinCAT:
+        // `m_ptrServices^.PtrProcessManager^.RequestAbort()`): `at` is the property's accessor
+        let at = match &callee.accessors[n - 2] {
+            Accessor::Deref(_) if n >= 3 => n - 3,
+            _ => n - 2,
+        };
+        let Accessor::Field(prop) = &callee.accessors[at] else {
             return;
         };
         let prefix = Place {
             base: callee.base.clone(),
-            accessors: callee.accessors[..n - 2].to_vec(),
+            accessors: callee.accessors[..at].to_vec(),
             span: callee.span,
         };
         let env = self.env();
@@ -347,9 +354,12 @@ impl PouLowering<'_> {
         let Some(ty) = env.member(&holder_type, &result) else {
             return;
         };
+        if at + 3 == n && !matches!(env.resolve(&ty), TypeRef::Ref { .. }) {
+            return; // `P^.Kid` of a property that is no pointer
+        }
         let holder = Place {
             base: callee.base.clone(),
-            accessors: callee.accessors[..n - 1].to_vec(),
+            accessors: callee.accessors[..=at].to_vec(),
             span: callee.span,
         };
         let span = holder.span;
@@ -381,9 +391,9 @@ impl PouLowering<'_> {
         };
         let t = self.temp(ty, span);
         calls.push(assign(name_place(t.clone()), value, span));
-        let method = callee.accessors[n - 1].clone();
+        let rest = callee.accessors[at + 1..].to_vec();
         callee.base = PlaceBase::Name(t);
-        callee.accessors = vec![method];
+        callee.accessors = rest;
     }
 
     /// `a.Child.Depth(args);` as the parser puts it before the statement reading its result
@@ -398,7 +408,7 @@ impl PouLowering<'_> {
         if is_chain(callee) || callee.accessors.len() < 2 {
             return None;
         }
-        let key = super::method_flow::field_key(callee)?;
+        let key = super::method_flow::deref_key(callee)?;
         let mut calls = Vec::new();
         let mut on = callee.clone();
         self.property_holder(&mut on, &mut calls);
@@ -525,7 +535,7 @@ fn assign(target: Place, value: Expr, span: Span) -> Stmt {
 }
 
 /// Whether expression `e` holds a call chain anywhere (in a place, an index, an argument).
-fn expr_has_chain(e: &Expr) -> bool {
+pub(super) fn expr_has_chain(e: &Expr) -> bool {
     let mut todo = vec![e];
     while let Some(e) = todo.pop() {
         match &e.kind {

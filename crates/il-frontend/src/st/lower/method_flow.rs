@@ -83,6 +83,26 @@ fn bool_lit(v: bool, span: Span) -> Expr {
     Expr::literal(LiteralKind::Bool(v), span)
 }
 
+/// The text key of a place made of names, fields and dereferences (`Svc^.PtrMgr^.Start`),
+/// upper-case; the same as [`field_key`] for a place without `^`.
+pub(super) fn deref_key(p: &Place) -> Option<String> {
+    let PlaceBase::Name(n) = &p.base else {
+        return None;
+    };
+    let mut k = n.key();
+    for a in &p.accessors {
+        match a {
+            Accessor::Field(f) => {
+                k.push('.');
+                k.push_str(&f.key());
+            }
+            Accessor::Deref(_) => k.push('^'),
+            _ => return None,
+        }
+    }
+    Some(k)
+}
+
 /// The text key of a place made of names and fields only (`Roots.PolyEval`), upper-case.
 pub(super) fn field_key(p: &Place) -> Option<String> {
     let PlaceBase::Name(n) = &p.base else {
@@ -621,7 +641,7 @@ pub(super) fn replace_place(e: &mut Expr, key: &str, t: &Ident) -> bool {
     let mut hit = false;
     each_expr(e, &mut |x| {
         if let ExprKind::Place(p) = &x.kind {
-            if field_key(p).as_deref() == Some(key) {
+            if deref_key(p).as_deref() == Some(key) {
                 x.kind = ExprKind::Place(name_place(Ident::new(t.name.clone(), p.span)));
                 hit = true;
             }
