@@ -411,3 +411,28 @@ fn a_transition_object_drawn_in_fbd_is_its_network_condition() {
         "{out}"
     );
 }
+
+/// Round 32 made a library-qualified enumeration value in a body (`Lib.E.V`) the library's
+/// E1032. A dotted `NAMESPACE` name of three parts (SIMATIC AX's `NAMESPACE Simatic.Ax.Comp`) is
+/// no such value: the file runs (simatic-ax/lgencomp, where the first build of round 32 gave an
+/// E1032 at `Simatic` and a cascade of E0307/E0011 over its five files).
+#[test]
+fn a_three_part_namespace_name_is_no_library_value() {
+    let src = "\
+NAMESPACE Simatic.Ax.Comp
+    FUNCTION Twice : INT
+        VAR_INPUT x : INT; END_VAR
+        Twice := x * 2;
+    END_FUNCTION
+END_NAMESPACE
+
+USING Simatic.Ax.Comp;
+PROGRAM Main
+    VAR n : INT; END_VAR
+    n := Twice(n + 1);
+END_PROGRAM
+";
+    let (out, err) = common::run_text("ns.st", src, 3, "Main.n");
+    assert!(!err.contains("error["), "{err}");
+    assert_eq!(column(&out, "Main.n"), [2.0, 6.0, 14.0], "{out}");
+}

@@ -313,12 +313,14 @@ fn namespace_blocks(src: &str, toks: &[Token], text: &mut Option<String>) -> Vec
 
 /// Whether `base` (upper case; empty: none) or one of the bases it extends in turn
 /// ([`PROJECT_BASES`]) declares variable `var` in one of the project's files (`BASE.VAR` among
-/// `names`).
+/// `names`), or, with `missing_base_members` (a body, not a declaration's type), is a base no file
+/// declares (any variable may be its).
 fn in_bases(
     base: &str,
     var: &str,
     names: &std::collections::HashSet<String>,
     declared: &std::collections::HashSet<String>,
+    missing_base_members: bool,
 ) -> bool {
     PROJECT_BASES.with(|p| {
         let p = p.borrow();
@@ -334,7 +336,11 @@ fn in_bases(
             // a base that no file of the project declares (a library's block, E0330 at the
             // EXTENDS): `_logger.M()` may name any of its variables, and E0330 is the one cause
             // (known once the other files' names are, `names` not empty: the file's parse again)
-            if !names.is_empty() && !names.contains(&b) && !declared.contains(&b) {
+            if missing_base_members
+                && !names.is_empty()
+                && !names.contains(&b)
+                && !declared.contains(&b)
+            {
                 return true;
             }
             match p.get(&b) {
@@ -479,7 +485,9 @@ pub(super) fn library_qualifiers(
                 let o = o.borrow();
                 o.contains(&w)
                     || (!pou.is_empty() && o.contains(&format!("{pou}.{w}")))
-                    || in_bases(&base, &w, &o, &declared)
+                    // (a missing base's members are no names of a declaration's type:
+                    // `p : Resi.ParameterSet` with `EXTENDS Resi.Base` missing is the library)
+                    || in_bases(&base, &w, &o, &declared, !in_decl)
             })
         {
             continue;
@@ -569,6 +577,8 @@ pub(super) fn library_qualifiers(
         // ProgramCycle`, E1048's; nor a `USING`/`NAMESPACE` name)
         let value_position = !in_decl
             && last >= k + 4
+            // (CODESYS's `__SYSTEM.TYPE_CLASS.TYPE_INT`: read where ANY inputs are)
+            && w != "__SYSTEM"
             && !prev.is_some_and(|p| {
                 p.tok == Tok::Colon
                     || ["USING", "NAMESPACE"]
