@@ -360,7 +360,7 @@ END_VAR
         "{lines:?}"
     );
     assert!(
-        list.contains("`Params.n` is not an integer constant"),
+        list.contains("`Params.n` names no constant with a value in the files given"),
         "{lines:?}"
     );
     // the library also in a type: one E1032
