@@ -224,12 +224,9 @@ impl PendingBody {
         }
     }
 
-    /// The name of the POU this body belongs to, found among `units` by its file and the start of
-    /// its name; `None` for a body that is no POU's or one not in `units`.
-    pub fn pou_name<'u>(
-        &self,
-        units: &'u [crate::ast::CompilationUnit],
-    ) -> Option<&'u crate::ast::Ident> {
+    /// The POU this body belongs to, found among `units` by its file and the start of its name;
+    /// `None` for a body that is no POU's or one not in `units`.
+    pub fn pou<'u>(&self, units: &'u [crate::ast::CompilationUnit]) -> Option<&'u crate::ast::Pou> {
         units
             .iter()
             .flat_map(|u| u.items.iter())
@@ -238,10 +235,18 @@ impl PendingBody {
                     if p.name.span.file == self.file
                         && p.name.span.start as usize == self.name_start =>
                 {
-                    Some(&p.name)
+                    Some(p)
                 }
                 _ => None,
             })
+    }
+
+    /// The name of the POU this body belongs to ([`Self::pou`]).
+    pub fn pou_name<'u>(
+        &self,
+        units: &'u [crate::ast::CompilationUnit],
+    ) -> Option<&'u crate::ast::Ident> {
+        self.pou(units).map(|p| &p.name)
     }
 }
 
@@ -2793,19 +2798,7 @@ fn missing_result_assigners(
 ) -> std::collections::HashSet<String> {
     let mut out = std::collections::HashSet::new();
     for pb in pending.iter().filter(|pb| !pb.sfc && !pb.il) {
-        let Some(p) = units
-            .iter()
-            .flat_map(|u| u.items.iter())
-            .find_map(|i| match i {
-                LibraryElement::Pou(p)
-                    if p.name.span.file == pb.file
-                        && p.name.span.start as usize == pb.name_start =>
-                {
-                    Some(p)
-                }
-                _ => None,
-            })
-        else {
+        let Some(p) = pb.pou(units) else {
             continue;
         };
         if p.kind != crate::ast::PouKind::Function || p.return_type.is_some() {
