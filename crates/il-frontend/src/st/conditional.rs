@@ -318,39 +318,41 @@ impl Reader {
 
     /// SIMATIC AX's `{::ifdef name}`: W1419 the first time a name nothing defined is asked for.
     fn defined_symbol(&mut self, name: &str, at: &Range<usize>) -> bool {
-        let key = name.to_ascii_lowercase();
-        if self.defines.contains_key(&key) {
-            return true;
-        }
-        if self.noted.insert(key) {
-            self.diags.push(
-                Diagnostic::new(
-                    code::W1419,
-                    Severity::Note,
-                    format!("`{name}` is not defined: its `{{::ifdef}}` / `{{::elseif}}` section is not compiled"),
-                )
-                .at(self.span(at))
-                .with_hint("ladderc does not read the preprocessor symbols of a SIMATIC AX build (`apax.yml`); the `{::else}` section, if any, is compiled"),
-            );
-        }
-        false
+        self.defined_or_noted(
+            name,
+            at,
+            format!("`{name}` is not defined: its `{{::ifdef}}` / `{{::elseif}}` section is not compiled"),
+            "ladderc does not read the preprocessor symbols of a SIMATIC AX build (`apax.yml`); the `{::else}` section, if any, is compiled",
+        )
     }
 
     /// `defined (name)`: W1419 the first time a name nothing defined is asked for.
     fn defined(&mut self, name: &str, at: &Range<usize>) -> bool {
+        self.defined_or_noted(
+            name,
+            at,
+            format!("`{name}` is not defined at this point of the text: `defined ({name})` is FALSE"),
+            "ladderc reads the text's own `{define ...}` pragmas and a TwinCAT project's `<CompilerDefines>`, not a variant's defines; add `{define NAME}` before the `{IF}`, or NAME to the project's compiler defines, to compile the other branch",
+        )
+    }
+
+    /// Whether `name` is defined; the first time one is not, W1419 with `message` and `hint`.
+    fn defined_or_noted(
+        &mut self,
+        name: &str,
+        at: &Range<usize>,
+        message: String,
+        hint: &str,
+    ) -> bool {
         let key = name.to_ascii_lowercase();
         if self.defines.contains_key(&key) {
             return true;
         }
         if self.noted.insert(key) {
             self.diags.push(
-                Diagnostic::new(
-                    code::W1419,
-                    Severity::Note,
-                    format!("`{name}` is not defined at this point of the text: `defined ({name})` is FALSE"),
-                )
-                .at(self.span(at))
-                .with_hint("ladderc reads the text's own `{define ...}` pragmas and a TwinCAT project's `<CompilerDefines>`, not a variant's defines; add `{define NAME}` before the `{IF}`, or NAME to the project's compiler defines, to compile the other branch"),
+                Diagnostic::new(code::W1419, Severity::Note, message)
+                    .at(self.span(at))
+                    .with_hint(hint),
             );
         }
         false
