@@ -96,6 +96,7 @@ pub mod tc2_error_id;
 pub mod tc2_mc2;
 pub mod tc2_override;
 pub mod text_lists;
+mod textual_sfc;
 pub mod trace_raw;
 pub mod twincat;
 pub mod user_libraries;
