@@ -19,6 +19,12 @@ pub struct Renames {
     /// Upper-case names whose `CAL name` is not renamed: a block's method called inside another
     /// method that declares a variable of the same name (`Hash : DWORD` beside `THIS^.Hash(k)`).
     pub calls_kept: std::collections::HashSet<String>,
+    /// Upper-case bases whose every field is in `fields` (a chart's steps) -> the variable a field
+    /// of it that `fields` does not map is renamed to, after the field is recorded in
+    /// `unknown_fields` (so the caller reports it once, and no "undeclared" follows).
+    pub closed_bases: HashMap<String, String>,
+    /// The (base, field) of each `Base.Field` of a closed base that `fields` does not map.
+    pub unknown_fields: std::cell::RefCell<Vec<(Ident, Ident)>>,
 }
 
 impl Renames {
@@ -111,6 +117,16 @@ impl Renames {
                 v.accessors.clear();
                 return;
             }
+        }
+        if let (Some(Accessor::Field(f)), Some(new)) =
+            (v.accessors.first(), self.closed_bases.get(&key))
+        {
+            self.unknown_fields
+                .borrow_mut()
+                .push((v.base.clone(), f.clone()));
+            v.base.name = new.clone();
+            v.accessors.remove(0);
+            return;
         }
         if let Some(new) = self.bases.get(&key) {
             v.base.name = new.clone();

@@ -366,6 +366,9 @@ impl Session {
         let mut v4_configs = Vec::new();
         let mut failed_json: Vec<PathBuf> = Vec::new();
         let paths = crate::openplc_v4::expand(self, paths, &mut v4_configs, &mut expand_diags);
+        // SIMATIC AX: a project folder stands for its src/ files; its apax.yml's preprocessor
+        // symbols (and those of the apax.yml above a .st input) are defines of `{::ifdef}`
+        let paths = crate::apax::expand(self, &paths, &mut defines, &mut expand_diags);
         let paths = crate::twincat::expand(
             self,
             &paths,
@@ -2029,7 +2032,7 @@ fn lower_textual_sfc(
                 diags,
             );
             // `Step.X`, `Step.T` in those actions: the chart's flags (round 31: E1001 before)
-            ladder_compiler::sfc::rename_step_flags(&mut p.body, &steps);
+            ladder_compiler::sfc::rename_step_flags(&mut p.body, &steps, diags);
             // the actions' own diagnostics, as where an ST body calls them
             for d in found {
                 diags.push(d.clone());
@@ -2268,7 +2271,7 @@ fn chart_scans(
         let is_var = il_frontend::actions::declares(p);
         body = il_frontend::actions::inline_calls(body, acts, &is_var, tag[1], next, diags);
     }
-    ladder_compiler::sfc::rename_step_flags(&mut body, &steps);
+    ladder_compiler::sfc::rename_step_flags(&mut body, &steps, diags);
     (body, hidden_all)
 }
 
