@@ -2,6 +2,8 @@
 //! variables by base and field (`Step.X` -> `__SFC_STEP_X`), and labels by a prefix.
 //!
 //! Input: statements and the maps. Output: the same statements, renamed in place.
+//! The fields of a closed base that the maps do not name are recorded (`unknown_fields`) for the
+//! caller to report, and renamed to the base's stand-in.
 //! Invariants: function names and formal parameter names are never renamed; index operands are.
 
 use crate::ast::{Accessor, CallArgs, Ident, IlStmt, InstrKind, Operand, VarRef};

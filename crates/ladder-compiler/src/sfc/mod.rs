@@ -23,7 +23,8 @@
 //! the derived block, its hidden variables the derived block's.
 //!
 //! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
-//! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
+//! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`
+//! (CODESYS's `Step._x` and `Step._t` to the same two); any other field of a step is one E1021.
 
 pub mod action_vars;
 pub mod actions;
