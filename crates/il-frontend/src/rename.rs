@@ -2,6 +2,8 @@
 //! variables by base and field (`Step.X` -> `__SFC_STEP_X`), and labels by a prefix.
 //!
 //! Input: statements and the maps. Output: the same statements, renamed in place.
+//! The fields of a closed base that the maps do not name are recorded (`unknown_fields`) for the
+//! caller to report, and renamed to the base's stand-in.
 //! Invariants: function names and formal parameter names are never renamed; index operands are.
 
 use crate::ast::{Accessor, CallArgs, Ident, IlStmt, InstrKind, Operand, VarRef};
@@ -19,6 +21,12 @@ pub struct Renames {
     /// Upper-case names whose `CAL name` is not renamed: a block's method called inside another
     /// method that declares a variable of the same name (`Hash : DWORD` beside `THIS^.Hash(k)`).
     pub calls_kept: std::collections::HashSet<String>,
+    /// Upper-case bases whose every field is in `fields` (a chart's steps) -> the variable a field
+    /// of it that `fields` does not map is renamed to, after the field is recorded in
+    /// `unknown_fields` (so the caller reports it once, and no "undeclared" follows).
+    pub closed_bases: HashMap<String, String>,
+    /// The (base, field) of each `Base.Field` of a closed base that `fields` does not map.
+    pub unknown_fields: std::cell::RefCell<Vec<(Ident, Ident)>>,
 }
 
 impl Renames {
@@ -111,6 +119,16 @@ impl Renames {
                 v.accessors.clear();
                 return;
             }
+        }
+        if let (Some(Accessor::Field(f)), Some(new)) =
+            (v.accessors.first(), self.closed_bases.get(&key))
+        {
+            self.unknown_fields
+                .borrow_mut()
+                .push((v.base.clone(), f.clone()));
+            v.base.name = new.clone();
+            v.accessors.remove(0);
+            return;
         }
         if let Some(new) = self.bases.get(&key) {
             v.base.name = new.clone();

@@ -58,6 +58,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod apax;
 pub mod axes;
 pub mod axis_links;
 pub mod beremiz;

@@ -366,6 +366,9 @@ impl Session {
         let mut v4_configs = Vec::new();
         let mut failed_json: Vec<PathBuf> = Vec::new();
         let paths = crate::openplc_v4::expand(self, paths, &mut v4_configs, &mut expand_diags);
+        // SIMATIC AX: a project folder stands for its src/ files; its apax.yml's preprocessor
+        // symbols (and those of the apax.yml above a .st input) are defines of `{::ifdef}`
+        let paths = crate::apax::expand(self, &paths, &mut defines, &mut expand_diags);
         let paths = crate::twincat::expand(
             self,
             &paths,

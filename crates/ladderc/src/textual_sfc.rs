@@ -136,7 +136,7 @@ pub(crate) fn lower_textual_sfc(
                 diags,
             );
             // `Step.X`, `Step.T` in those actions: the chart's flags (round 31: E1001 before)
-            ladder_compiler::sfc::rename_step_flags(&mut p.body, &steps);
+            ladder_compiler::sfc::rename_step_flags(&mut p.body, &steps, diags);
             // the actions' own diagnostics, as where an ST body calls them
             for d in found {
                 diags.push(d.clone());
@@ -363,6 +363,6 @@ fn chart_scans(
         let is_var = il_frontend::actions::declares(p);
         body = il_frontend::actions::inline_calls(body, acts, &is_var, tag[1], next, diags);
     }
-    ladder_compiler::sfc::rename_step_flags(&mut body, &steps);
+    ladder_compiler::sfc::rename_step_flags(&mut body, &steps, diags);
     (body, hidden_all)
 }

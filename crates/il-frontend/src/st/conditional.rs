@@ -23,10 +23,11 @@
 //! project's properties define is FALSE, with the W1419 note saying so.
 //!
 //! SIMATIC AX writes the same sections `{::ifdef X}` ... `{::elseif Y}` ... `{::else}` ...
-//! `{::endif}` (Siemens' ae-demo-rack sample), each condition a symbol the build defines (listed in
-//! its `apax.yml`, which ladderc does not read): read as `defined (X)`, so with no define the
-//! `{::else}` branch, or none, is compiled (round 32; before, every branch was compiled and each
-//! pragma was W0300).
+//! `{::endif}` (Siemens' ae-demo-rack sample), each condition a symbol the build defines: read as
+//! `defined (X)`, so with no define the `{::else}` branch, or none, is compiled (round 32; before,
+//! every branch was compiled and each pragma was W0300). The symbols of the project's `apax.yml`
+//! (its `DEFINED_PREPROCESSOR_SYMBOLS` list, read by `ladderc::apax`) are project defines too
+//! (round 33).
 
 use super::lexer::Problem;
 use crate::{FileId, Span};
@@ -88,7 +89,7 @@ fn directive(text: &str) -> Option<Directive<'_>> {
     }
     // SIMATIC AX (Siemens' ae-demo-rack sample): `{::ifdef SYMBOL}` ... `{::elseif SYMBOL}` ...
     // `{::else}` ... `{::endif}`, each condition a preprocessor symbol the build defines (its
-    // `apax.yml` lists them, not read): defined or not, as `defined (SYMBOL)`
+    // `apax.yml` lists them, project defines): defined or not, as `defined (SYMBOL)`
     if let Some(ax) = inner.trim_start().strip_prefix("::") {
         let ax = ax.trim();
         let end = ax
@@ -322,7 +323,7 @@ impl Reader {
             name,
             at,
             format!("`{name}` is not defined: its `{{::ifdef}}` / `{{::elseif}}` section is not compiled"),
-            "ladderc does not read the preprocessor symbols of a SIMATIC AX build (`apax.yml`); the `{::else}` section, if any, is compiled",
+            "ladderc reads the symbols listed under `DEFINED_PREPROCESSOR_SYMBOLS` in the project's apax.yml (give the project folder or its .st files) and the text's own `{define}`s; the `{::else}` section, if any, is compiled",
         )
     }
 

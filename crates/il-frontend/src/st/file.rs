@@ -1684,6 +1684,14 @@ fn parse_text_as_read(
         }
         first_try = Some((unit, local));
     }
+    // 4CONTROL's resource file (`RESOURCE r` without a configuration): one E1094, the file not
+    // compiled (`hash_directives`), before its `#IMPORT` lines are noted
+    if lang == Lang::St {
+        if let Some(d) = super::hash_directives::four_control_resource(file, src) {
+            diags.push(d);
+            return (CompilationUnit::default(), pending, Vec::new());
+        }
+    }
     // `#ifdef X` ... `#else` ... `#endif` (B&R's preprocessor): the sections not compiled and the
     // directive lines blanked (`hash_directives`), before `#word` could read as SCL's `#local`
     let preprocessed;

@@ -9,9 +9,11 @@
 //! `#ifdef` or a `#ifdef` never closed; a W1419 note the first time a condition asks for a name
 //! that nothing in the text defines (before: E0023 "this file is Siemens SCL", the rest of the
 //! file not compiled). Softing 4CONTROL's `#import "file.gvl"` (MECT's TPAC panels) is blanked
-//! too, with one note W1458 per file: the imported globals are those of the inputs. Its block of
-//! constants `CONST ... END_CONST` is one E1095 and the file is not compiled
-//! ([`four_control_constants`]).
+//! too (also written `#IMPORT`: directive words are case-insensitive), with one note W1458 per
+//! file: the imported globals are those of the inputs. Its block of constants `CONST ...
+//! END_CONST` is one E1095 and the file is not compiled ([`four_control_constants`]); so is its
+//! resource file, a `RESOURCE` without its `CONFIGURATION`, one E1094
+//! ([`four_control_resource`]).
 //!
 //! Invariants: sections nest; inside a section not compiled no define changes; a `#if` /
 //! `#elif` compiles none of its sections (no branch chosen by guess). Names are case-sensitive as
@@ -51,7 +53,14 @@ pub fn hash_directives(file: FileId, src: &str, diags: &mut Diagnostics) -> Opti
         let end = rest
             .find(|c: char| !c.is_ascii_alphabetic())
             .unwrap_or(rest.len());
-        let word = &rest[..end];
+        // directive words are case-insensitive as IEC 61131-3 keywords are (4CONTROL writes
+        // `#IMPORT` in its configuration and resource files, `#import` in POUs); B&R's and
+        // K5's `#ifdef` family is written in lower case, which this keeps
+        let word = DIRECTIVES
+            .iter()
+            .copied()
+            .find(|d| d.eq_ignore_ascii_case(&rest[..end]))
+            .unwrap_or(&rest[..end]);
         DIRECTIVES
             .contains(&word)
             .then(|| (lead, word, rest[end..].trim()))
@@ -263,6 +272,55 @@ pub fn four_control_constants(file: FileId, src: &str) -> Option<Diagnostic> {
         }
     }
     None
+}
+
+/// E1094 at `RESOURCE name` when it is the first word of the text: a resource standing without
+/// its `CONFIGURATION`, as Softing 4CONTROL / ATCMcontrol keeps one in a resource file (`.res`,
+/// imported by the configuration file's `#IMPORT "Resource1.res"`), its tasks set by 4CONTROL's
+/// `EVENT` and `AUTOSTART` (a task not autostarted runs once a program starts it with
+/// `StartLocalTask`). IEC 61131-3 ed. 2 2.7.1 (ed. 3 6.8.1) declares a resource inside a
+/// configuration only; ladderc does not guess the 4CONTROL schedule, so the file is not compiled
+/// (one error naming the construct; before round 33: E0023 "Siemens SCL" at `#IMPORT`, or a
+/// syntax error at `RESOURCE`).
+pub fn four_control_resource(file: FileId, src: &str) -> Option<Diagnostic> {
+    let quiet = quiet_ranges(src);
+    let mut words = Vec::new();
+    let mut i = 0;
+    let b = src.as_bytes();
+    while i < b.len() && words.len() < 2 {
+        if let Some(r) = quiet.iter().find(|r| r.start == i) {
+            i = r.end;
+            continue;
+        }
+        let c = b[i];
+        if c.is_ascii_alphabetic() || c == b'_' {
+            let start = i;
+            while i < b.len() && (b[i].is_ascii_alphanumeric() || b[i] == b'_') {
+                i += 1;
+            }
+            words.push(start..i);
+        } else if c.is_ascii_whitespace() {
+            i += 1;
+        } else {
+            break;
+        }
+    }
+    let [kw, name] = words.as_slice() else {
+        return None;
+    };
+    if !src[kw.clone()].eq_ignore_ascii_case("RESOURCE") {
+        return None;
+    }
+    let name_text = &src[name.clone()];
+    Some(
+        Diagnostic::error(
+            code::E1094,
+            format!("`RESOURCE {name_text}` stands without its CONFIGURATION (a 4CONTROL / ATCMcontrol resource file): this file is not compiled"),
+        )
+        .at(Span::new(file, kw.start, name.end))
+        .with_primary_label("resource outside a configuration")
+        .with_hint("IEC 61131-3 declares a RESOURCE inside `CONFIGURATION c ... END_CONFIGURATION`, its tasks set by INTERVAL, SINGLE and PRIORITY (4CONTROL's EVENT and AUTOSTART are not read): write the configuration so, or leave this file out and every program runs once per cycle"),
+    )
 }
 
 /// The byte ranges of the comments (`(* *)` and `/* */` nested as the ST lexer reads them, `//` to

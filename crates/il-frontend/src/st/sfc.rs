@@ -383,9 +383,18 @@ impl Reader<'_> {
 /// The type a step is of for the ST lowering of the chart's conditions and actions: a structure of
 /// `X : BOOL` (active) and `T : TIME` (elapsed since it became active), so `Step.X` and `Step.T`
 /// type-check (IEC 61131-3 ed. 3 8.3.2, ed. 2 2.6.2; CODESYS's and TwinCAT's `SFCStepType`,
-/// Beckhoff Infosys "Implicit variables": `<stepname>.x`, `<stepname>.t`); the SFC lowering then
-/// renames them to the chart's hidden variables.
+/// Beckhoff Infosys "Implicit variables": `<stepname>.x`, `<stepname>.t`); also `_X : BOOL` and
+/// `_T : TIME`, CODESYS's and TwinCAT's `<stepname>._x` ("the activation status for the next
+/// cycle", copied to `.x` at the start of a cycle; written to force a step) and `<stepname>._t`
+/// (CODESYS SFC "Implicit Variables"; Beckhoff Infosys "Implicit variables"), which ladderc reads
+/// as the same flag and time: its chart decides the steps of the next cycle before the actions run
+/// (README "SFC"). The SFC lowering then renames all four to the chart's hidden variables.
 pub const STEP_TYPE: &str = "__SFC_STEP";
+
+/// The fields of [`STEP_TYPE`] (name, type): IEC's `X` and `T`, CODESYS's and TwinCAT's `_X` and
+/// `_T`.
+pub const STEP_FIELDS: [(&str, &str); 4] =
+    [("X", "BOOL"), ("T", "TIME"), ("_X", "BOOL"), ("_T", "TIME")];
 
 /// The declaration of [`STEP_TYPE`], at `span`.
 pub fn step_type(span: Span) -> crate::ast::TypeDecl {
@@ -400,7 +409,7 @@ pub fn step_type(span: Span) -> crate::ast::TypeDecl {
     TypeDecl {
         name: Ident::new(STEP_TYPE, span),
         def: TypeDef::Struct {
-            fields: vec![field("X", "BOOL"), field("T", "TIME")],
+            fields: STEP_FIELDS.iter().map(|(n, t)| field(n, t)).collect(),
         },
         union: false,
         span,

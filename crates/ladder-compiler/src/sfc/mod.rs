@@ -23,7 +23,8 @@
 //! the derived block, its hidden variables the derived block's.
 //!
 //! `Step.X`, `Step.T`, `Action.Q` and `Action.A` in conditions and action bodies are renamed to the
-//! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`.
+//! hidden variables `__sfc_X_<step>`, `__sfc_T_<step>`, `__sfc_Q_<action>`, `__sfc_A_<action>`
+//! (CODESYS's `Step._x` and `Step._t` to the same two); any other field of a step is one E1021.
 
 pub mod action_vars;
 pub mod actions;
@@ -41,7 +42,7 @@ use crate::project::Index;
 use crate::xml::Element;
 use actions::Target;
 use chart::{report, CondSource};
-use diagnostics::code;
+use diagnostics::{code, Diagnostics};
 use il::{Hidden, Renames};
 use il_frontend::ast::{IlStmt, Op, Pou, VarDecl};
 use snippet::{Purpose, Snippets};
@@ -407,11 +408,7 @@ pub fn lower_chart<'e, 'a>(
     // Chart names in conditions and bodies.
     let mut renames = Renames::default();
     for s in &chart.steps {
-        let k = s.name.to_ascii_uppercase();
-        renames
-            .fields
-            .insert((k.clone(), "X".into()), names::x(&s.name));
-        renames.fields.insert((k, "T".into()), names::t(&s.name));
+        step_flags(&mut renames, &s.name);
     }
     for a in &acts {
         if let Some(n) = &a.name {
@@ -426,6 +423,7 @@ pub fn lower_chart<'e, 'a>(
         hidden.push(v);
     }
     renames.apply(&mut out);
+    ctx.diags.extend(unknown_step_flags(&renames));
     (out, hidden.vars)
 }
 
@@ -434,18 +432,59 @@ pub fn lower_chart<'e, 'a>(
 /// `ACTIONS` block after the POU, a TwinCAT POU's `<Action>` objects) once the chart's `CAL`s of
 /// them are inlined. IEC 61131-3 ed. 3 8.3.2 (ed. 2 2.6.2): `step.X`, `step.T`; Beckhoff Infosys
 /// "Implicit variables" and CODESYS "Implicit Variables": `<stepname>.x`, `<stepname>.t`, readable
-/// in every action of the SFC object (`._x`, `._t` are not: TwinCAT's internal copies).
-pub fn rename_step_flags(stmts: &mut [IlStmt], steps: &[String]) {
+/// in every action of the SFC object, and `._x`, `._t` ([`step_flags`]).
+/// A field of a step that is none of its flags is one E1021 in `diags` ([`unknown_step_flags`]).
+pub fn rename_step_flags(stmts: &mut [IlStmt], steps: &[String], diags: &mut Diagnostics) {
     if steps.is_empty() {
         return;
     }
     let mut renames = Renames::default();
     for s in steps {
-        let k = s.to_ascii_uppercase();
-        renames.fields.insert((k.clone(), "X".into()), names::x(s));
-        renames.fields.insert((k, "T".into()), names::t(s));
+        step_flags(&mut renames, s);
     }
     renames.apply(stmts);
+    diags.extend(unknown_step_flags(&renames));
+}
+
+/// One E1021 per `Step.Field` whose field is none of a step's flags (`Fill.Foo`), at the field,
+/// naming the step and the flags it has (before round 33: E1001 "undeclared name `Fill`" at the
+/// step, which is declared: it is the chart's). The reference itself was renamed to the step's
+/// active flag, so nothing else is reported for it.
+fn unknown_step_flags(renames: &Renames) -> Vec<diagnostics::Diagnostic> {
+    renames
+        .unknown_fields
+        .borrow_mut()
+        .drain(..)
+        .map(|(step, field)| {
+            diagnostics::Diagnostic::error(
+                code::E1021,
+                format!("step `{}` has no flag `{}`", step.name, field.name),
+            )
+            .at(field.span)
+            .with_primary_label("unknown step flag")
+            .with_hint("a step's flags are `X` (active) and `T` (time since it became active), IEC 61131-3 ed. 2 2.6.2, and CODESYS's and TwinCAT's `_x` and `_t`")
+        })
+        .collect()
+}
+
+/// The renames of one step's flags: `Step.X` and `Step._X` to its active flag, `Step.T` and
+/// `Step._T` to its elapsed time. CODESYS and TwinCAT ("Implicit Variables", CODESYS SFC help and
+/// Beckhoff Infosys) keep `_x` as the activation status for the next cycle, copied to `x` at the
+/// start of a cycle, and `_t` as an internal copy of `t`: ladderc's chart decides the next cycle's
+/// steps (scan order 3) before any action runs (5), so its one flag is both, and a `Step._x :=
+/// TRUE` written by an action or another POU activates the step from the next scan on, as
+/// CODESYS's forcing does.
+fn step_flags(renames: &mut Renames, step: &str) {
+    let k = step.to_ascii_uppercase();
+    for (field, _) in il_frontend::st::sfc::STEP_FIELDS {
+        let to = if field.ends_with('X') {
+            names::x(step)
+        } else {
+            names::t(step)
+        };
+        renames.fields.insert((k.clone(), field.into()), to);
+    }
+    renames.closed_bases.insert(k, names::x(step));
 }
 
 /// The chart's reset by CODESYS's SFCInit / SFCReset (either TRUE, `__sfc_rst`): the initial steps
