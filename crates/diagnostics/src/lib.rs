@@ -40,6 +40,13 @@ pub struct Diagnostics {
     list: Vec<Diagnostic>,
     /// The hashes of the diagnostics pushed (code, severity, place, message).
     seen: std::collections::HashSet<u64>,
+    /// Where diagnostics of some files are shown instead (boxed: the sink is returned in `Err`s).
+    places: Box<Places>,
+}
+
+/// Files and pieces of files whose diagnostics are shown elsewhere.
+#[derive(Default, Clone)]
+struct Places {
     /// Files that are copies of another, byte for byte (a block with generic constants built once
     /// per set of values): their diagnostics are placed in the original ([`Diagnostics::read_as`]).
     copies: std::collections::HashMap<FileId, FileId>,
@@ -83,7 +90,7 @@ impl Diagnostics {
     /// name and file, at its first use).
     pub fn push(&mut self, mut d: Diagnostic) {
         use std::hash::{Hash, Hasher};
-        if !self.moved.is_empty() {
+        if !self.places.moved.is_empty() {
             if let Some(sp) = d.span.as_mut() {
                 *sp = self.where_written(*sp);
             }
@@ -91,9 +98,9 @@ impl Diagnostics {
                 l.span = self.where_written(l.span);
             }
         }
-        if !self.copies.is_empty() {
+        if !self.places.copies.is_empty() {
             let original = |sp: &mut Span| {
-                if let Some(f) = self.copies.get(&sp.file) {
+                if let Some(f) = self.places.copies.get(&sp.file) {
                     sp.file = *f;
                 }
             };
@@ -115,7 +122,7 @@ impl Diagnostics {
     /// From now on, places the diagnostics of `copy` (a file whose text is `original`'s, byte for
     /// byte, read again) in `original`, where one equal to a diagnostic of `original` is left out.
     pub fn read_as(&mut self, copy: FileId, original: FileId) {
-        self.copies.insert(copy, original);
+        self.places.copies.insert(copy, original);
     }
     /// From now on, places a diagnostic whose span lies in pieces of `file`'s text that were written
     /// elsewhere than they stand (`pieces`, sorted by [`MovedText::at`]) where they stand in the file.
@@ -124,12 +131,12 @@ impl Diagnostics {
             return;
         }
         pieces.sort_by_key(|p| p.at);
-        self.moved.insert(file, pieces);
+        self.places.moved.insert(file, pieces);
     }
     /// `span` where its text stands in the file: moved when it starts and ends inside pieces of
     /// one group of [`Diagnostics::read_moved`], else as it is.
     fn where_written(&self, span: Span) -> Span {
-        let Some(pieces) = self.moved.get(&span.file) else {
+        let Some(pieces) = self.places.moved.get(&span.file) else {
             return span;
         };
         // the piece holding byte `pos` (`end`: the piece the span's last byte is in)
