@@ -40,9 +40,35 @@ pub struct Diagnostics {
     list: Vec<Diagnostic>,
     /// The hashes of the diagnostics pushed (code, severity, place, message).
     seen: std::collections::HashSet<u64>,
+    /// Where diagnostics of some files are shown instead (boxed: the sink is returned in `Err`s).
+    places: Box<Places>,
+}
+
+/// Files and pieces of files whose diagnostics are shown elsewhere.
+#[derive(Default, Clone)]
+struct Places {
     /// Files that are copies of another, byte for byte (a block with generic constants built once
     /// per set of values): their diagnostics are placed in the original ([`Diagnostics::read_as`]).
     copies: std::collections::HashMap<FileId, FileId>,
+    /// Pieces of a file's text written elsewhere in it than they stand in the file
+    /// ([`Diagnostics::read_moved`]), sorted by where they were written.
+    moved: std::collections::HashMap<FileId, Vec<MovedText>>,
+}
+
+/// A piece of text that a reader wrote at one place of a file's text as compiled (`at`, `len`
+/// bytes) but that stands at another place of the same file (`from`): a TwinCAT chart's condition
+/// taken from its `<Transition>` object. Pieces of one `group` (one condition) are one text: a
+/// span from one of them to another is moved as a whole.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MovedText {
+    /// Where the piece was written in the text as compiled.
+    pub at: u32,
+    /// Its length in bytes.
+    pub len: u32,
+    /// Where it stands in the file.
+    pub from: u32,
+    /// The text it belongs to: spans across pieces of different groups are not moved.
+    pub group: u32,
 }
 
 /// The list alone (the hashes are bookkeeping): two sinks that hold the same diagnostics print the
@@ -64,9 +90,17 @@ impl Diagnostics {
     /// name and file, at its first use).
     pub fn push(&mut self, mut d: Diagnostic) {
         use std::hash::{Hash, Hasher};
-        if !self.copies.is_empty() {
+        if !self.places.moved.is_empty() {
+            if let Some(sp) = d.span.as_mut() {
+                *sp = self.where_written(*sp);
+            }
+            for l in &mut d.labels {
+                l.span = self.where_written(l.span);
+            }
+        }
+        if !self.places.copies.is_empty() {
             let original = |sp: &mut Span| {
-                if let Some(f) = self.copies.get(&sp.file) {
+                if let Some(f) = self.places.copies.get(&sp.file) {
                     sp.file = *f;
                 }
             };
@@ -88,7 +122,43 @@ impl Diagnostics {
     /// From now on, places the diagnostics of `copy` (a file whose text is `original`'s, byte for
     /// byte, read again) in `original`, where one equal to a diagnostic of `original` is left out.
     pub fn read_as(&mut self, copy: FileId, original: FileId) {
-        self.copies.insert(copy, original);
+        self.places.copies.insert(copy, original);
+    }
+    /// From now on, places a diagnostic whose span lies in pieces of `file`'s text that were written
+    /// elsewhere than they stand (`pieces`, sorted by [`MovedText::at`]) where they stand in the file.
+    pub fn read_moved(&mut self, file: FileId, mut pieces: Vec<MovedText>) {
+        if pieces.is_empty() {
+            return;
+        }
+        pieces.sort_by_key(|p| p.at);
+        self.places.moved.insert(file, pieces);
+    }
+    /// `span` where its text stands in the file: moved when it starts and ends inside pieces of
+    /// one group of [`Diagnostics::read_moved`], else as it is.
+    fn where_written(&self, span: Span) -> Span {
+        let Some(pieces) = self.places.moved.get(&span.file) else {
+            return span;
+        };
+        // the piece holding byte `pos` (`end`: the piece the span's last byte is in)
+        let piece = |pos: u32, end: bool| {
+            let k = pieces.partition_point(|p| p.at <= pos.saturating_sub(u32::from(end)));
+            let p = pieces.get(k.checked_sub(1)?)?;
+            let inside = if end {
+                pos > p.at && pos <= p.at + p.len
+            } else {
+                pos >= p.at && pos < p.at + p.len
+            };
+            inside.then_some(*p)
+        };
+        let (Some(a), Some(b)) = (piece(span.start, false), piece(span.end, !span.is_empty()))
+        else {
+            return span;
+        };
+        let (start, end) = (a.from + (span.start - a.at), b.from + (span.end - b.at));
+        if a.group != b.group || end < start {
+            return span;
+        }
+        Span { start, end, ..span }
     }
     /// Adds several (each as [`Diagnostics::push`]).
     pub fn extend(&mut self, ds: impl IntoIterator<Item = Diagnostic>) {

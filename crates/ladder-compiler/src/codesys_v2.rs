@@ -221,6 +221,8 @@ fn line_comment_open(line: &[u8]) -> bool {
 /// The file's text being turned into source: bytes outside the copied texts are blank.
 pub(crate) struct Source {
     bytes: Vec<u8>,
+    /// Texts written here that stand elsewhere in the file ([`Source::place_moved`]).
+    moved: Vec<diagnostics::MovedText>,
 }
 
 impl Source {
@@ -231,6 +233,7 @@ impl Source {
                 .bytes()
                 .map(|b| if b == b'\n' || b == b'\r' { b } else { b' ' })
                 .collect(),
+            moved: Vec::new(),
         }
     }
 
@@ -288,6 +291,40 @@ impl Source {
             }
         }
         None
+    }
+
+    /// [`Source::place`] for a word that stands at `original` in the file (a chart's condition
+    /// taken from another object of the file): where it is written is recorded, so that a
+    /// diagnostic in it is shown where it stands ([`Source::take_moved`]); `group`: the text it
+    /// belongs to.
+    pub(crate) fn place_moved(
+        &mut self,
+        from: usize,
+        to: usize,
+        word: &str,
+        original: usize,
+        group: u32,
+    ) -> Option<usize> {
+        let end = self.place(from, to, word)?;
+        let at = end - word.len();
+        if let (Ok(at), Ok(len), Ok(from)) = (
+            u32::try_from(at),
+            u32::try_from(word.len()),
+            u32::try_from(original),
+        ) {
+            self.moved.push(diagnostics::MovedText {
+                at,
+                len,
+                from,
+                group,
+            });
+        }
+        Some(end)
+    }
+
+    /// The texts written by [`Source::place_moved`], for `diagnostics::Diagnostics::read_moved`.
+    pub(crate) fn take_moved(&mut self) -> Vec<diagnostics::MovedText> {
+        std::mem::take(&mut self.moved)
     }
 
     /// [`Source::place`] up to the end of the text, else after it (on a line of its own).

@@ -7,7 +7,8 @@
 //! elements (a body numbered from 0, its ids distinct, counts 0 as the first position:
 //! `numbered_from_zero`), networks without one after them by the top-most then left-most element
 //! position (y, then x);
-//! inside a network, data flow first, ties broken the same way, then by localId.
+//! inside a network, data flow first, ties broken the same way, then by localId (an element without
+//! a number in a numbered body where its first numbered reader runs: `lower_order`).
 //! Invariants: every [`Wire::from`] indexes [`Graph::nodes`]; every node but a power rail belongs to exactly
 //! one network (rails join no rungs and are in none);
 //! a duplicate localId (E3014), an element without localId (E3013) or an unsupported element (E3012) is

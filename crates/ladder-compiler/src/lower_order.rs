@@ -1,6 +1,8 @@
 //! The order of one network's elements, for [`super`]: Kahn's topological order over the wires
 //! (block pins, connector/continuation pairs, and a contact or input variable naming an output of a
-//! block instance of the same network), ties broken by the documented order key.
+//! block instance of the same network), ties broken first by where the data flow needs a node (its
+//! own `executionOrderId`, or for an unnumbered node the earliest one of the numbered nodes reading
+//! it: [`needed_by`]), then by the documented order key.
 //!
 //! Input: the rung graph, a network's node indexes (increasing) and its implicit dependencies.
 //! Output: the nodes in evaluation order, those on a loop left out (the caller then cuts the loop on
@@ -81,30 +83,87 @@ pub(super) fn kahn(
     }
     // Users of each source in any order: the heap decides the order.
     edges.sort_unstable();
+    let needed = needed_by(g, net, &edges, &indeg);
+    let key = |k: usize, i: usize| (needed[k], g.nodes[i].order_key());
     let mut heap = BinaryHeap::with_capacity(net.len());
     for (k, &i) in net.iter().enumerate() {
         if indeg[k] == 0 {
-            heap.push(std::cmp::Reverse((g.nodes[i].order_key(), i)));
+            heap.push(std::cmp::Reverse((key(k, i), i)));
         }
     }
     let mut order = Vec::with_capacity(net.len());
     while let Some(std::cmp::Reverse((_, i))) = heap.pop() {
         order.push(i);
         let Some(si) = slot(i) else { continue };
-        let from = edges.partition_point(|e| e.0 < si);
-        for &(s, u) in &edges[from..] {
-            if s != si {
-                break;
-            }
+        for &(_, u) in users(&edges, si) {
             if let Some(k) = slot(u) {
                 indeg[k] -= 1;
                 if indeg[k] == 0 {
-                    heap.push(std::cmp::Reverse((g.nodes[u].order_key(), u)));
+                    heap.push(std::cmp::Reverse((key(k, u), u)));
                 }
             }
         }
     }
     order
+}
+
+/// The (source slot, user node) pairs of `edges` (sorted) whose source is slot `si`.
+fn users(edges: &[(usize, usize)], si: usize) -> &[(usize, usize)] {
+    let from = edges.partition_point(|e| e.0 < si);
+    let to = edges.partition_point(|e| e.0 <= si);
+    &edges[from..to]
+}
+
+/// For each node of `net` (by slot), the position in the execution order where the data flow first
+/// needs it: its own `executionOrderId` when it has one, else the earliest one among the elements
+/// that read its value, directly or through other unnumbered elements (`u32::MAX` when none does).
+/// [`kahn`] orders the ready nodes by this first, so an unnumbered element (an input variable, a
+/// connector, a contact) is evaluated just before the first numbered element that reads it, after
+/// the numbered elements before that one: a variable written by the element numbered 0 and read
+/// through an unnumbered input variable by the element numbered 1 is read after the write. This is
+/// RuSTy's rule (its `plc_xml` crate turns only numbered elements into statements and writes the
+/// unnumbered ones into them as expressions) and CODESYS's ("Dialog: Properties: CFC Execution
+/// Order": "The POUs and the outputs are numbered internally"; inputs have no number and are read
+/// by the element they feed). A body with no number, or with every element numbered, keeps the
+/// plain order key (Beremiz's all-zero files).
+/// `edges` holds the (source slot, user node) pairs sorted, `indeg` each slot's count of sources.
+fn needed_by(g: &Graph, net: &[usize], edges: &[(usize, usize)], indeg: &[usize]) -> Vec<u32> {
+    let own: Vec<u32> = net.iter().map(|&i| g.nodes[i].order_key().0).collect();
+    let numbered = own.iter().filter(|&&o| o != u32::MAX).count();
+    if numbered == 0 || numbered == own.len() {
+        return own;
+    }
+    let slot = |i: usize| net.binary_search(&i).ok();
+    // A topological order of the slots (nodes on a loop are left out and keep their own number).
+    let mut indeg = indeg.to_vec();
+    let mut topo: Vec<usize> = (0..net.len()).filter(|&k| indeg[k] == 0).collect();
+    let mut next = 0;
+    while let Some(&si) = topo.get(next) {
+        next += 1;
+        for &(_, u) in users(edges, si) {
+            if let Some(k) = slot(u) {
+                indeg[k] -= 1;
+                if indeg[k] == 0 {
+                    topo.push(k);
+                }
+            }
+        }
+    }
+    // Users come after their sources in `topo`: walking it backwards, each user's need is final
+    // before its sources read it.
+    let mut needed = own.clone();
+    for &si in topo.iter().rev() {
+        if own[si] != u32::MAX {
+            continue;
+        }
+        needed[si] = users(edges, si)
+            .iter()
+            .filter_map(|&(_, u)| slot(u))
+            .map(|k| needed[k])
+            .min()
+            .unwrap_or(u32::MAX);
+    }
+    needed
 }
 
 #[cfg(test)]

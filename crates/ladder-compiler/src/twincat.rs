@@ -14,7 +14,9 @@
 //! is read as ST by `twincat_nwl`, a body in CFC by `twincat_cfc`, a POU's body in SFC as
 //! textual SFC by `twincat_sfc` (its `<Transition>` children the conditions it names), their tokens
 //! written into the blank markup of their own elements (so a diagnostic points at the operand's or
-//! box's line), after a VAR block of the temporaries they need. Invariants: never panics; an
+//! box's line), after a VAR block of the temporaries they need; the words of a chart's condition
+//! taken from a `<Transition>` object are written into the chart and listed in
+//! [`TcObject::Source`]'s `moved`, so that a diagnostic in them is shown in the object. Invariants: never panics; an
 //! action's or method's body in SFC is one located E0321 naming it, a graphical element not understood one located E0325/E0326,
 //! an action whose networks need temporaries one E0327 (an action has no declarations); a file whose
 //! root is not `<TcPlcObject>` gives `None`.
@@ -22,7 +24,7 @@
 use crate::codesys_v2::{local_name, root_name, Source};
 use crate::twincat_cfc;
 use crate::twincat_nwl::{self, NwlBody};
-use crate::twincat_sfc;
+use crate::twincat_sfc::{self, TransitionObject};
 use crate::xml::{self, Element};
 use diagnostics::{code, Diagnostic, FileId, Span};
 
@@ -42,6 +44,10 @@ pub enum TcObject {
         /// declaration, its methods' and its properties' declarations are in `text` (callers are
         /// checked against them), its actions and the bodies are not.
         notes: Vec<Diagnostic>,
+        /// Words written into the chart of an SFC body that stand elsewhere in the file (a
+        /// condition taken from a `<Transition>` object), for
+        /// `diagnostics::Diagnostics::read_moved`: a diagnostic in them is shown where they stand.
+        moved: Vec<diagnostics::MovedText>,
     },
     /// A task (`.TcTTO`).
     Task(TcTask),
@@ -164,6 +170,7 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
             _ => {}
         }
     }
+    let moved = out.take_moved();
     let mut text = out.finish();
     let unlinked = unlink_io(&mut text);
     for &(s, e) in &declarations {
@@ -190,7 +197,12 @@ pub fn object_source(file: FileId, text: &str) -> Option<Result<TcObject, Box<Di
         .into_iter()
         .chain(refused)
         .collect();
-    Some(Ok(TcObject::Source { text, list, notes }))
+    Some(Ok(TcObject::Source {
+        text,
+        list,
+        notes,
+        moved,
+    }))
 }
 
 /// Blanks each `AT %I*`, `AT %Q*` and `AT %M*` of the IEC text (outside comments and strings),
@@ -664,31 +676,9 @@ fn body_of<'e, 'a>(
         // an LD/FBD one (x-PPU's `TAbort`, one FBD network assigning the transition's name; IEC
         // 61131-3 ed. 3 8.3.3 allows a transition condition in LD or FBD) read as its ST
         // statement when it needs no temporary (else the chart's E0321 says it is no expression)
-        let objects: Vec<(String, String)> = el
+        let objects: Vec<TransitionObject> = el
             .children_named("Transition")
-            .map(|t| {
-                let name = t.attr("Name").unwrap_or("").trim().to_string();
-                let body = t.child("Implementation");
-                let st = match (
-                    body.and_then(|i| i.child("ST")),
-                    body.and_then(|i| i.child("NWL")),
-                ) {
-                    (Some(s), _) => s.text(),
-                    (None, Some(nwl)) => {
-                        match twincat_nwl::lower(file, nwl, &format!("{what}.{name}"), false) {
-                            Ok(b) if b.temps.is_empty() => b
-                                .toks
-                                .iter()
-                                .map(|t| t.text.as_str())
-                                .collect::<Vec<_>>()
-                                .join(" "),
-                            _ => String::new(),
-                        }
-                    }
-                    (None, None) => String::new(),
-                };
-                (name, st)
-            })
+            .map(|t| transition_object(file, t, what))
             .collect();
         return Ok(Some(Body::Graph(
             lang,
@@ -707,6 +697,56 @@ fn body_of<'e, 'a>(
         "export the POU from TwinCAT as PLCopen XML (right-click > Export PLCopenXML) and give \
          ladderc that file: it reads LD, FBD and SFC there",
     ))
+}
+
+/// A `<Transition>` object of the POU `what`, for [`twincat_sfc`]: its ST text where it stands
+/// in the file (when the text is one piece of it), or its LD/FBD network read as ST (x-PPU's
+/// `TAbort`, one FBD network assigning the transition's name; IEC 61131-3 ed. 3 8.3.3 allows a
+/// transition condition in LD or FBD), each token at its network element, when it needs no
+/// temporary (else the chart's E0321 says it is no expression).
+fn transition_object(file: FileId, t: &Element, what: &str) -> TransitionObject {
+    let name = t.attr("Name").unwrap_or("").trim().to_string();
+    let body = t.child("Implementation");
+    match (
+        body.and_then(|i| i.child("ST")),
+        body.and_then(|i| i.child("NWL")),
+    ) {
+        (Some(st), _) => {
+            let text = st.text();
+            // one CDATA or text piece: the text is the file's, byte for byte, from its start
+            let pieces = match st.segments() {
+                [one] if one.text.len() == text.len() && one.end - one.start == text.len() => {
+                    vec![(0, one.start, true)]
+                }
+                _ => Vec::new(),
+            };
+            TransitionObject { name, text, pieces }
+        }
+        (None, Some(nwl)) => {
+            match twincat_nwl::lower(file, nwl, &format!("{what}.{name}"), false) {
+                Ok(b) if b.temps.is_empty() => {
+                    let mut text = String::new();
+                    let mut pieces = Vec::with_capacity(b.toks.len());
+                    for tok in &b.toks {
+                        if !text.is_empty() {
+                            text.push(' ');
+                        }
+                        pieces.push((text.len(), tok.at, false));
+                        text.push_str(&tok.text);
+                    }
+                    TransitionObject { name, text, pieces }
+                }
+                _ => TransitionObject {
+                    name,
+                    ..TransitionObject::default()
+                },
+            }
+        }
+        (None, None) => TransitionObject {
+            name,
+            ..TransitionObject::default()
+        },
+    }
 }
 
 /// Writes a body into place from `at` (ST: its text where it is; LD/FBD: its temporaries' VAR
@@ -735,7 +775,7 @@ fn write_body(
     };
     let limit = nwl.end();
     let mut at = at.max(nwl.tag_start());
-    let mut words: Vec<(String, usize)> = Vec::new();
+    let mut words: Vec<(String, usize, Option<usize>)> = Vec::new();
     if !lowered.temps.is_empty() {
         if !declares {
             return Err(fail(&format!(
@@ -744,27 +784,36 @@ fn write_body(
                 lowered.what
             )));
         }
-        words.push(("VAR".into(), 0));
+        words.push(("VAR".into(), 0, None));
         for (name, ty) in &lowered.temps {
             words.extend([
-                (name.clone(), 0),
-                (":".into(), 0),
-                (ty.clone(), 0),
-                (";".into(), 0),
+                (name.clone(), 0, None),
+                (":".into(), 0, None),
+                (ty.clone(), 0, None),
+                (";".into(), 0, None),
             ]);
         }
-        words.push(("END_VAR".into(), 0));
+        words.push(("END_VAR".into(), 0, None));
     }
-    words.extend(lowered.toks.iter().map(|t| (t.text.clone(), t.at)));
-    for (text, pref) in words {
+    words.extend(lowered.toks.iter().map(|t| (t.text.clone(), t.at, t.from)));
+    // a run of words that stand elsewhere in the file (a condition from a transition object) is
+    // one text for the diagnostics placed there
+    let mut group = 0u32;
+    let mut moving = false;
+    for (text, pref, original) in words {
         let from = if pref > at && pref < limit { pref } else { at };
-        at = match out
-            .place(from, limit, &text)
-            .or_else(|| out.place(at, limit, &text))
-        {
+        let mut place = |from: usize| match original {
+            Some(o) => out.place_moved(from, limit, &text, o, group),
+            None => out.place(from, limit, &text),
+        };
+        at = match place(from).or_else(|| place(at)) {
             Some(w) => w,
             None => return Err(fail(&format!("no room in the markup for `{text}`"))),
         };
+        if moving && original.is_none() {
+            group += 1;
+        }
+        moving = original.is_some();
     }
     Ok(at)
 }

@@ -55,6 +55,9 @@ pub(crate) struct Tok {
     pub text: String,
     /// The offset of the archive element it stands for.
     pub at: usize,
+    /// Where the token stands in the file when that is not at `at` (a chart's condition taken
+    /// from a `<Transition>` object: the word in the object's text): diagnostics are shown there.
+    pub from: Option<usize>,
 }
 
 /// An LD/FBD body read as ST.
@@ -1536,6 +1539,7 @@ pub(crate) fn tok(text: &str, at: usize) -> Tok {
     Tok {
         text: text.to_string(),
         at,
+        from: None,
     }
 }
 

@@ -6,7 +6,10 @@
 //! Input: the `<SFC>` element, the POU's `<Transition>` children (name and ST body) and the body's
 //! name (for messages). Output: [`NwlBody`] tokens: `INITIAL_STEP`/`STEP name: action(qualifier);
 //! END_STEP` and `TRANSITION FROM a TO b := condition; END_TRANSITION`, each at the offset of the
-//! archive object it comes from (so a diagnostic points at the step's or transition's lines).
+//! archive object it comes from (so a diagnostic points at the step's or transition's lines); the
+//! words of a condition taken from a `<Transition>` object also carry where they stand in the
+//! object (`Tok::from`: the word in its ST text, or its LD/FBD network's element), where
+//! `twincat` has the diagnostics in them shown.
 //! What the archive holds, read from the real files (the attributes of an object sit in
 //! `<l2 n="Attributes">`, keyed by GUID, each with a `Value` and a `DefaultValue`):
 //! - `38391c6d-...`: the name of a step, jump target, macro, branch or associated action; the
@@ -33,7 +36,7 @@
 //! timed qualifier (its duration's attribute
 //! is not known), an element out of sequence or a jump to no step is one located E0321 naming it.
 
-use crate::twincat_nwl::{NwlBody, Tok};
+use crate::twincat_nwl::{tok, NwlBody, Tok};
 use crate::xml::Element;
 use diagnostics::{code, Diagnostic, FileId, Span};
 
@@ -47,6 +50,62 @@ const ACTIVE: &str = "700a583f-b4d4-43e4-8c14-629c7cd3bec8";
 const EXIT: &str = "a2621e18-7de3-4ea6-ae6d-89e9e0b7befd";
 const QUALIFIER: &str = "e174fc0d-80b0-4a9e-a530-ca239c249a50";
 const PARALLEL: &str = "23bdaa98-72ec-41f7-817b-9dede5697086";
+
+/// The hint of a transition condition that is not one expression.
+const HINT_CONDITION: &str =
+    "write the condition as one ST expression (or a transition object holding one)";
+
+/// A `<Transition>` object of the POU, which a transition of the chart names: its condition as
+/// ST text, and where each piece of that text stands in the file.
+#[derive(Debug, Default)]
+pub(crate) struct TransitionObject {
+    /// The object's name (`Name` attribute).
+    pub name: String,
+    /// Its ST text (`Name := expr;` or an expression), or its LD/FBD network's tokens joined by
+    /// blanks.
+    pub text: String,
+    /// Pieces of `text` read from one place of the file, in order: (offset in `text`, offset in the
+    /// file, whether the piece is the file's text there byte for byte: an ST text; a network's token
+    /// stands at its element). None: the text's place is not known.
+    pub pieces: Vec<(usize, usize, bool)>,
+}
+
+impl TransitionObject {
+    /// Where byte `pos` of [`TransitionObject::text`] stands in the file.
+    fn file_offset(&self, pos: usize) -> Option<usize> {
+        let k = self.pieces.partition_point(|p| p.0 <= pos).checked_sub(1)?;
+        let (start, at, same) = self.pieces[k];
+        Some(if same { at + (pos - start) } else { at })
+    }
+
+    /// The byte range of the condition in `body` (the object's text with its comments blanked,
+    /// [`strip_comments`]): blanks and a trailing `;` dropped, and the `Name :=` that assigns the
+    /// transition's own name.
+    fn condition_range(&self, body: &str) -> (usize, usize) {
+        let trimmed = |s: usize, e: usize| {
+            let part = body.get(s..e).unwrap_or("");
+            let lead = part.len() - part.trim_start().len();
+            (s + lead, s + part.trim_end().len())
+        };
+        let (mut s, mut e) = trimmed(0, body.len());
+        if body.get(..e).is_some_and(|b| b.ends_with(';')) {
+            (s, e) = trimmed(s, e - 1);
+        }
+        let name = self.name.as_str();
+        let assigned = body
+            .get(s..s + name.len())
+            .filter(|p| !name.is_empty() && p.eq_ignore_ascii_case(name))
+            .and_then(|_| {
+                let rest = body.get(s + name.len()..e)?;
+                let after = rest.trim_start().strip_prefix(":=")?;
+                Some(e - after.len())
+            });
+        if let Some(from) = assigned {
+            (s, e) = trimmed(from, e);
+        }
+        (s, e)
+    }
+}
 
 /// One attribute of an archive object: its GUID, value and default (unquoted), and the offset of
 /// its `Value`.
@@ -100,19 +159,19 @@ struct Reader<'t> {
     what: &'t str,
     /// The archive's own table of attribute names (`SFCAttributeDescription`: GUID -> identifier).
     names: Vec<(String, String)>,
-    /// The POU's `<Transition>` objects: name and ST text.
-    objects: &'t [(String, String)],
+    /// The POU's `<Transition>` objects.
+    objects: &'t [TransitionObject],
     steps: Vec<StepOut>,
     trans: Vec<TransOut>,
 }
 
 /// Reads the `<SFC>` element `sfc` of the body named `what`; `objects`: the POU's `<Transition>`
-/// children (name, ST text).
+/// children.
 pub(crate) fn lower(
     file: FileId,
     sfc: &Element,
     what: &str,
-    objects: &[(String, String)],
+    objects: &[TransitionObject],
     pou: &Element,
 ) -> Res<NwlBody> {
     let flags = flags(pou);
@@ -227,6 +286,7 @@ pub(crate) fn lower(
                 u8::from(declare)
             ),
             at: 0,
+            from: None,
         });
         if declare && !declares(&declaration, &var) {
             if let Some(ty) = flag_type(&name) {
@@ -799,61 +859,53 @@ impl Reader<'_> {
     }
 
     /// The tokens of a transition condition: the ST expression (a trailing `;` dropped), or the ST
-    /// text of the `<Transition>` object it names (`Name := expr;` or an expression).
+    /// text of the `<Transition>` object it names (`Name := expr;` or an expression), each word of
+    /// an object's text marked with where it stands in the file ([`Tok::from`]).
     fn condition(&self, text: &str, at: usize) -> Res<Vec<Tok>> {
         let t = text.trim();
-        let (expr, from_object) = match self.objects.iter().find(|(n, _)| n.eq_ignore_ascii_case(t))
-        {
-            Some((name, body)) => {
-                let body = strip_comments(body);
-                let b = body.trim();
-                let b = b.strip_suffix(';').unwrap_or(b).trim();
-                // `Name := expr` (the transition assigns its own name)
-                let rest = b
-                    .get(..name.len())
-                    .filter(|p| p.eq_ignore_ascii_case(name))
-                    .map(|_| b[name.len()..].trim_start())
-                    .and_then(|r| r.strip_prefix(":="));
-                (rest.unwrap_or(b).trim().to_string(), true)
+        let Some(object) = self.objects.iter().find(|o| o.name.eq_ignore_ascii_case(t)) else {
+            let body = strip_comments(t);
+            let expr = body.trim().trim_end_matches(';').trim();
+            if expr.is_empty() || expr.contains(';') || expr.contains(":=") {
+                let what = if expr.is_empty() {
+                    "a transition without a condition".to_string()
+                } else {
+                    format!("the transition condition `{t}` is not one boolean expression")
+                };
+                return Err(self.err(at, what, HINT_CONDITION));
             }
-            None => (
-                strip_comments(t)
-                    .trim()
-                    .trim_end_matches(';')
-                    .trim()
-                    .to_string(),
-                false,
-            ),
+            return Ok(words(expr)
+                .into_iter()
+                .map(|(w, _)| Tok {
+                    text: w,
+                    at,
+                    from: None,
+                })
+                .collect());
         };
+        let body = strip_comments(&object.text);
+        let (start, end) = object.condition_range(&body);
+        let expr = body.get(start..end).unwrap_or("");
         if expr.is_empty() || expr.contains(';') || expr.contains(":=") {
-            let what = if from_object {
-                format!("the transition `{t}` is not one boolean expression")
-            } else if expr.is_empty() {
-                "a transition without a condition".to_string()
-            } else {
-                format!("the transition condition `{t}` is not one boolean expression")
-            };
             return Err(self.err(
-                at,
-                what,
-                "write the condition as one ST expression (or a transition object holding one)",
+                object.file_offset(start).unwrap_or(at),
+                format!("the transition `{t}` is not one boolean expression"),
+                HINT_CONDITION,
             ));
         }
-        Ok(words(&expr)
+        Ok(words(expr)
             .into_iter()
-            .map(|w| Tok { text: w, at })
+            .map(|(w, k)| Tok {
+                text: w,
+                at,
+                from: object.file_offset(start + k),
+            })
             .collect())
     }
 
     /// The textual chart, each element at its archive object.
     fn text(&self) -> NwlBody {
         let mut toks = Vec::new();
-        let mut push = |text: &str, at: usize| {
-            toks.push(Tok {
-                text: text.to_string(),
-                at,
-            })
-        };
         // steps and transitions in archive order: transitions leaving one step keep their order
         // (a branch's sequences from left to right: CODESYS's priority)
         let mut items: Vec<(usize, bool, usize)> = self
@@ -867,26 +919,24 @@ impl Reader<'_> {
         for (at, is_step, k) in items {
             if is_step {
                 let s = &self.steps[k];
-                push(if s.initial { "INITIAL_STEP" } else { "STEP" }, at);
-                push(&s.name, at);
-                push(":", at);
+                toks.push(tok(if s.initial { "INITIAL_STEP" } else { "STEP" }, at));
+                toks.push(tok(&s.name, at));
+                toks.push(tok(":", at));
                 for (a, q) in &s.actions {
-                    push(&format!("{a}({q});"), at);
+                    toks.push(tok(&format!("{a}({q});"), at));
                 }
-                push("END_STEP", at);
+                toks.push(tok("END_STEP", at));
             } else {
                 let t = &self.trans[k];
-                push("TRANSITION", at);
-                push("FROM", at);
-                self.step_list(&t.from, at, &mut push);
-                push("TO", at);
-                self.step_list(&t.to, at, &mut push);
-                push(":=", at);
-                for w in &t.cond {
-                    push(&w.text, w.at);
-                }
-                push(";", at);
-                push("END_TRANSITION", at);
+                toks.push(tok("TRANSITION", at));
+                toks.push(tok("FROM", at));
+                self.step_list(&t.from, at, &mut toks);
+                toks.push(tok("TO", at));
+                self.step_list(&t.to, at, &mut toks);
+                toks.push(tok(":=", at));
+                toks.extend(t.cond.iter().cloned());
+                toks.push(tok(";", at));
+                toks.push(tok("END_TRANSITION", at));
             }
         }
         NwlBody {
@@ -899,43 +949,48 @@ impl Reader<'_> {
 
 impl Reader<'_> {
     /// The steps a transition leaves or activates: one name, or `(a, b)` for several.
-    fn step_list(&self, steps: &[usize], at: usize, push: &mut impl FnMut(&str, usize)) {
+    fn step_list(&self, steps: &[usize], at: usize, toks: &mut Vec<Tok>) {
         match steps {
-            [] => push("?", at),
-            [one] => push(&self.steps[*one].name, at),
+            [] => toks.push(tok("?", at)),
+            [one] => toks.push(tok(&self.steps[*one].name, at)),
             many => {
-                push("(", at);
+                toks.push(tok("(", at));
                 for (k, s) in many.iter().enumerate() {
                     if k > 0 {
-                        push(",", at);
+                        toks.push(tok(",", at));
                     }
-                    push(&self.steps[*s].name, at);
+                    toks.push(tok(&self.steps[*s].name, at));
                 }
-                push(")", at);
+                toks.push(tok(")", at));
             }
         }
     }
 }
 
-/// `text` without its `(* *)` and `//` comments (strings kept).
+/// `text` with its `(* *)` and `//` comments blanked, byte for byte (line breaks and strings
+/// kept): every other byte stays at its offset.
 fn strip_comments(text: &str) -> String {
     let b = text.as_bytes();
-    let mut out = String::new();
+    let mut out = b.to_vec();
+    let mut blank = |from: usize, to: usize| {
+        for c in &mut out[from.min(b.len())..to.min(b.len())] {
+            if *c != b'\n' && *c != b'\r' {
+                *c = b' ';
+            }
+        }
+    };
     let mut i = 0;
-    let mut keep = 0;
     while i < b.len() {
         match b[i] {
             b'(' if b.get(i + 1) == Some(&b'*') => {
-                out.push_str(&text[keep..i]);
-                out.push(' ');
-                i = text[i + 2..].find("*)").map_or(b.len(), |e| i + 2 + e + 2);
-                keep = i;
+                let end = text[i + 2..].find("*)").map_or(b.len(), |e| i + 2 + e + 2);
+                blank(i, end);
+                i = end;
             }
             b'/' if b.get(i + 1) == Some(&b'/') => {
-                out.push_str(&text[keep..i]);
-                out.push(' ');
-                i = text[i..].find('\n').map_or(b.len(), |e| i + e);
-                keep = i;
+                let end = text[i..].find('\n').map_or(b.len(), |e| i + e);
+                blank(i, end);
+                i = end;
             }
             q @ (b'\'' | b'"') => {
                 i += 1;
@@ -947,16 +1002,18 @@ fn strip_comments(text: &str) -> String {
             _ => i += 1,
         }
     }
-    out.push_str(text.get(keep..).unwrap_or(""));
-    out
+    // only whole characters were blanked (comments begin and end at ASCII bytes)
+    String::from_utf8(out).unwrap_or_else(|e| String::from_utf8_lossy(e.as_bytes()).into_owned())
 }
 
-/// The words of an expression, split at white space outside strings (each fits on a line).
-fn words(text: &str) -> Vec<String> {
+/// The words of an expression, split at white space outside strings (each fits on a line), each
+/// with its byte offset in `text`.
+fn words(text: &str) -> Vec<(String, usize)> {
     let mut out = Vec::new();
     let mut cur = String::new();
+    let mut start = 0;
     let mut quote: Option<char> = None;
-    for c in text.chars() {
+    for (k, c) in text.char_indices() {
         match quote {
             Some(q) => {
                 cur.push(c);
@@ -966,10 +1023,13 @@ fn words(text: &str) -> Vec<String> {
             }
             None if c.is_whitespace() => {
                 if !cur.is_empty() {
-                    out.push(std::mem::take(&mut cur));
+                    out.push((std::mem::take(&mut cur), start));
                 }
             }
             None => {
+                if cur.is_empty() {
+                    start = k;
+                }
                 if c == '\'' || c == '"' {
                     quote = Some(c);
                 }
@@ -978,7 +1038,7 @@ fn words(text: &str) -> Vec<String> {
         }
     }
     if !cur.is_empty() {
-        out.push(cur);
+        out.push((cur, start));
     }
     out
 }

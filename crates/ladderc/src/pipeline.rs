@@ -681,7 +681,14 @@ impl Session {
                     twincat_tasks.push((file, task));
                     continue;
                 }
-                Some(Ok(ladder_compiler::twincat::TcObject::Source { text, list, notes })) => {
+                Some(Ok(ladder_compiler::twincat::TcObject::Source {
+                    text,
+                    list,
+                    notes,
+                    moved,
+                })) => {
+                    // a chart's condition taken from a transition object: shown in the object
+                    self.diags.read_moved(file, moved);
                     self.diags.extend(notes);
                     if let Some(list) = list {
                         twincat_lists.push((units.len(), list));
