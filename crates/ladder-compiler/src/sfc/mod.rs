@@ -432,8 +432,8 @@ pub fn lower_chart<'e, 'a>(
 /// `ACTIONS` block after the POU, a TwinCAT POU's `<Action>` objects) once the chart's `CAL`s of
 /// them are inlined. IEC 61131-3 ed. 3 8.3.2 (ed. 2 2.6.2): `step.X`, `step.T`; Beckhoff Infosys
 /// "Implicit variables" and CODESYS "Implicit Variables": `<stepname>.x`, `<stepname>.t`, readable
-/// in every action of the SFC object, and `._x`, `._t` ([`step_flags`]).
-/// A field of a step that is none of its flags is one E1021 in `diags` ([`unknown_step_flags`]).
+/// in every action of the SFC object, and `._x`, `._t` (`step_flags`).
+/// A field of a step that is none of its flags is one E1021 in `diags` (`unknown_step_flags`).
 pub fn rename_step_flags(stmts: &mut [IlStmt], steps: &[String], diags: &mut Diagnostics) {
     if steps.is_empty() {
         return;
