@@ -24,7 +24,7 @@
 //! one hidden PROGRAM [`PROGRAM`] does so for the global variables (after it assigns the global
 //! lists' interface variables their instances and computes their run-time initial values),
 //! then runs every program's [`ACTION`] and its own initial values computed at run time (its
-//! `method_inits::INIT_PREFIX` method, [`super::pou_inits`]; a program that a configuration
+//! `method_inits::INIT_PREFIX` method, `pou_inits`; a program that a configuration
 //! instantiates twice computes them when each instance first runs). The C backend runs that
 //! program once, before the first cycle (before the cycle-0 stimulus), never in a cycle.
 //! Invariants: a project without FB_init methods or computed initial values is unchanged; every
