@@ -49,7 +49,8 @@ pub fn parse(file: FileId, src: &str, diags: &mut Diagnostics) -> CompilationUni
 
 /// Parses one IL source file; instructions and non-global `VAR` blocks outside any POU (as in bare test
 /// files) are collected, in order, into one implicit `PROGRAM implicit_name` placed where the first of
-/// them appears, with warning W0001.
+/// them appears, with warning W0001. Without instructions, such `VAR` blocks are global variables
+/// (note W0018), and with a `VAR_INPUT`, `VAR_OUTPUT` or `VAR_IN_OUT` among them, error E1102.
 pub fn parse_named(
     file: FileId,
     src: &str,
@@ -85,6 +86,29 @@ pub fn parse_named(
         let at = at.min(top.items.len());
         top.items.splice(at..at, globals);
     }
+    // a VAR_INPUT, VAR_OUTPUT or VAR_IN_OUT block outside any POU, and no instruction (an ST
+    // file's interface written before its `PROGRAM` header): one error at the block, and every
+    // block read as global variables so that the POU's uses of them report nothing more (round 33:
+    // before, W0001 at the block, an empty implicit program, and an E1001 at each use)
+    if let Some((at, vars, _)) = top.implicit.take_if(|(_, vars, body)| {
+        body.is_empty()
+            && vars.iter().all(|b| {
+                b.name.is_none()
+                    && matches!(
+                        b.kind,
+                        VarKind::Local | VarKind::Input | VarKind::Output | VarKind::InOut
+                    )
+            })
+            && vars.iter().any(|b| b.kind != VarKind::Local)
+    }) {
+        let at = at.min(top.items.len());
+        diags.push(interface_outside_pou(file, &vars, &top.items[at..]));
+        let globals = vars.into_iter().map(|mut b| {
+            b.kind = VarKind::Global;
+            LibraryElement::GlobalVars(b)
+        });
+        top.items.splice(at..at, globals);
+    }
     if let Some((at, vars, body)) = top.implicit.take() {
         let implicit_name = &implicit_program_name(implicit_name);
         let first = top.first_bare.unwrap_or(Span::new(file, 0, 0));
@@ -110,6 +134,51 @@ pub fn parse_named(
         items: top.items,
         ..CompilationUnit::default()
     }
+}
+
+/// E1102 at the first interface block (`VAR_INPUT`, `VAR_OUTPUT`, `VAR_IN_OUT`) of `vars`, blocks
+/// written outside any POU; `after`: the items that follow them (the POU they belong to, first).
+fn interface_outside_pou(
+    file: FileId,
+    vars: &[ast::VarBlock],
+    after: &[LibraryElement],
+) -> Diagnostic {
+    let keyword = |k: VarKind| match k {
+        VarKind::Output => "VAR_OUTPUT",
+        VarKind::InOut => "VAR_IN_OUT",
+        _ => "VAR_INPUT",
+    };
+    let block = vars.iter().find(|b| b.kind != VarKind::Local);
+    let (keyword, span) = block.map_or(("VAR_INPUT", Span::new(file, 0, 0)), |b| {
+        let k = keyword(b.kind);
+        (
+            k,
+            Span::new(file, b.span.start as usize, b.span.start as usize + k.len()),
+        )
+    });
+    let next = after.iter().find_map(|i| match i {
+        LibraryElement::Pou(p) => Some(p),
+        _ => None,
+    });
+    let hint = match next {
+        Some(p) => format!(
+            "move the block after the header `{} {}` (IEC 61131-3 ed. 3, 6.5.1: a POU declares its inputs, outputs and variables between its header and its body)",
+            match p.kind {
+                PouKind::Program => "PROGRAM",
+                PouKind::FunctionBlock => "FUNCTION_BLOCK",
+                PouKind::Function => "FUNCTION",
+            },
+            p.name.name
+        ),
+        None => "put the block in a POU, after its header (IEC 61131-3 ed. 3, 6.5.1: a POU declares its inputs, outputs and variables between its header and its body); for variables every POU shares write VAR_GLOBAL".to_string(),
+    };
+    Diagnostic::error(
+        code::E1102,
+        format!("a {keyword} block outside any POU: it belongs after a POU's header"),
+    )
+    .at(span)
+    .with_primary_label("outside any POU")
+    .with_hint(hint)
 }
 
 /// The ending of the POU name of a B&R program (named after its folder) whose folder is named like

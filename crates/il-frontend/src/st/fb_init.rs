@@ -23,8 +23,11 @@
 //! `{attribute 'call_after_init'}`; an array element by element, a structure field by field), and
 //! one hidden PROGRAM [`PROGRAM`] does so for the global variables (after it assigns the global
 //! lists' interface variables their instances and computes their run-time initial values),
-//! then runs every program's [`ACTION`]. The C backend runs that program once, before the first
-//! cycle, never in a cycle. Invariants: a project without FB_init methods is unchanged; every
+//! then runs every program's [`ACTION`] and its own initial values computed at run time (its
+//! `method_inits::INIT_PREFIX` method, `pou_inits`; a program that a configuration
+//! instantiates twice computes them when each instance first runs). The C backend runs that
+//! program once, before the first cycle (before the cycle-0 stimulus), never in a cycle.
+//! Invariants: a project without FB_init methods or computed initial values is unchanged; every
 //! argument that goes nowhere is one E0329 naming it; an array of more than [`MAX_ELEMENTS`]
 //! instances to initialise, or a POU needing more than [`MAX_STATEMENTS`] calls, is E0345; a
 //! program whose instances need it and that a configuration instantiates twice is E0347.
@@ -299,12 +302,24 @@ pub fn add_init_calls(
         match item {
             LibraryElement::Pou(p) if p.kind != PouKind::Function => {
                 let stmts = gen.members(&p.var_blocks);
-                if stmts.is_empty() {
+                // a program's own initial values computed at run time (its `INIT_PREFIX`
+                // method, `pou_inits`): assigned here too, before the first cycle's stimulus,
+                // as a block's are when its instance is initialised (round 33; before, at the
+                // program's first run, after the cycle-0 stimulus, which they overwrote)
+                let own_inits = match blocks.get(&p.name.key()) {
+                    Some(b) if p.kind == PouKind::Program => b.inst_inits.clone(),
+                    _ => Vec::new(),
+                };
+                if stmts.is_empty() && own_inits.is_empty() {
                     continue;
                 }
                 if p.kind == PouKind::Program {
                     // the hidden program calls the program's ACTION on its one instance
                     if let Some(list) = configured.get(&p.name.key()).filter(|l| l.len() > 1) {
+                        if stmts.is_empty() {
+                            // (each instance computes its own values when it first runs)
+                            continue;
+                        }
                         gen.diags.push(
                             Diagnostic::error(
                                 code::E0347,
@@ -325,9 +340,11 @@ pub fn add_init_calls(
                         );
                         continue;
                     }
-                    programs.push(p.name.clone());
+                    programs.push((p.name.clone(), !stmts.is_empty(), own_inits));
                 }
-                bodies.push((p.name.key(), stmts));
+                if !stmts.is_empty() {
+                    bodies.push((p.name.key(), stmts));
+                }
             }
             LibraryElement::GlobalVars(b) => globals.extend(gen.members(std::slice::from_ref(b))),
             LibraryElement::Configuration(c) => {
@@ -435,7 +452,7 @@ pub fn add_init_calls(
         first.append(&mut globals);
         globals = first;
     }
-    if bodies.is_empty() && globals.is_empty() {
+    if bodies.is_empty() && globals.is_empty() && programs.is_empty() {
         return;
     }
     for (key, _) in &bodies {
@@ -474,7 +491,10 @@ pub fn add_init_calls(
             .extend(actions.into_iter().map(LibraryElement::Action));
     }
     // the hidden program: the global instances, then each program's instances
-    let Some(span) = span.or_else(|| globals.first().map(|s| s.span)) else {
+    let Some(span) = span
+        .or_else(|| programs.first().map(|p| p.0.span))
+        .or_else(|| globals.first().map(|s| s.span))
+    else {
         return;
     };
     let mut hidden = Pou {
@@ -491,19 +511,26 @@ pub fn add_init_calls(
     if let Some(t) = low.finish(span) {
         hidden.var_blocks.push(t);
     }
-    for p in programs {
-        body.push(crate::ast::IlStmt::Instr(crate::ast::Instruction {
-            kind: crate::ast::InstrKind::Call {
-                cond: crate::ast::Condition::Always,
-                instance: Box::new(crate::ast::VarRef {
-                    base: p.clone(),
-                    accessors: vec![crate::ast::Accessor::Field(Ident::new(ACTION, p.span))].into(),
-                    span: p.span,
-                }),
-                args: crate::ast::CallArgs::None,
-            },
-            span: p.span,
-        }));
+    // each program's instances, then its own computed initial values (a block's order)
+    for (p, instances, own_inits) in programs {
+        let methods = instances
+            .then(|| ACTION.to_string())
+            .into_iter()
+            .chain(own_inits);
+        for m in methods {
+            body.push(crate::ast::IlStmt::Instr(crate::ast::Instruction {
+                kind: crate::ast::InstrKind::Call {
+                    cond: crate::ast::Condition::Always,
+                    instance: Box::new(crate::ast::VarRef {
+                        base: p.clone(),
+                        accessors: vec![crate::ast::Accessor::Field(Ident::new(m, p.span))].into(),
+                        span: p.span,
+                    }),
+                    args: crate::ast::CallArgs::None,
+                },
+                span: p.span,
+            }));
+        }
     }
     hidden.body = body;
     if let Some(unit) = units.last_mut() {

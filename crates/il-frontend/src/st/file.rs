@@ -1537,6 +1537,10 @@ pub fn detect(src: &str) -> Lang {
         || (pous.is_empty()
             && toks.iter().any(|t| t.tok != Tok::Eof)
             && body_lang(src, &toks) == Lang::St)
+        // 4CONTROL's `CONST ... END_CONST` (a `.cst` file of a MECT project), even empty: a
+        // dialect of ST, whose reader gives its one E1095 (round 33: before, read as IL, an
+        // unknown function `CONST`)
+        || super::hash_directives::four_control_constants(FileId::default(), src).is_some()
     {
         Lang::St
     } else {
@@ -1708,6 +1712,9 @@ fn parse_text_as_read(
     // 4CONTROL's `CONST ... END_CONST`: one E1095, the file not compiled (`hash_directives`)
     if lang == Lang::St {
         if let Some(d) = super::hash_directives::four_control_constants(file, src) {
+            // (S7-SCL has a `CONST ... END_CONST` section too: its own marks name SCL)
+            let (toks, problems) = lex(src);
+            let d = super::scl::siemens_scl(file, src, &toks, &problems).unwrap_or(d);
             diags.push(d);
             return (CompilationUnit::default(), pending, Vec::new());
         }
@@ -1873,13 +1880,19 @@ fn parse_text_as_read(
     };
     let (pous, stray) = scan_tokens(src, &toks);
     // ST statements outside any POU (a CODESYS body copied without its `PROGRAM` header): one error,
-    // and the IL parser does not read them (before: one IL error per line)
+    // and the IL parser does not read them (before: one IL error per line). An expression or a
+    // call ended by `;` is one too (`table[k];`, `DSUB(TRUE, a, b, F);`: round 33, before read as
+    // IL, two errors a line); in a `.st` file `;` ends a statement, it starts no comment
     let stray_st = lang == Lang::St
-        && stray.iter().any(|&k| {
+        && stray.iter().enumerate().any(|(n, &k)| {
             toks[k].tok == Tok::Assign
                 || ["IF", "CASE", "FOR", "WHILE", "REPEAT"]
                     .iter()
                     .any(|w| is_word(src, &toks[k], w))
+                || (toks[k].tok == Tok::Semi
+                    && n > 0
+                    && stray[n - 1] + 1 == k
+                    && matches!(toks[k - 1].tok, Tok::RBracket | Tok::RParen))
         });
     // a POU keyword that is a word of stray text (`... of this function` before `FUNCTION Twice`):
     // blanked, so the IL parser reports the stray text once and the POU after it stays whole
@@ -3134,7 +3147,13 @@ pub fn compile_pending(
                 let init = super::interface_vars::initial_values(&decls, p, &own, computed, diags);
                 // ... and when each instance is initialised, before its FB_init, as CODESYS and
                 // TwinCAT initialise declarations (`fb_init` calls every `INIT_PREFIX` method)
-                if at_instance_init && p.kind == crate::ast::PouKind::FunctionBlock {
+                // (a PROGRAM's one instance too: before the first cycle, `fb_init`)
+                if at_instance_init
+                    && matches!(
+                        p.kind,
+                        crate::ast::PouKind::FunctionBlock | crate::ast::PouKind::Program
+                    )
+                {
                     let span = p.name.span;
                     standalone.push(crate::ast::Action {
                         pou: p.name.clone(),

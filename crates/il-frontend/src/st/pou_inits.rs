@@ -7,7 +7,8 @@
 //! `:= expr` that the declarations' parse leaves out, and the assignments `name := expr;` where they
 //! are written in a text of the declarations' length, the rest blanked ([`pou_run_time_inits`]).
 //! `super::file::compile_pending` runs them in declaration order, behind a flag, when each
-//! instance is initialised (before its FB_init, a hidden `method_inits::INIT_PREFIX` method) and
+//! instance is initialised (before its FB_init, a hidden `method_inits::INIT_PREFIX` method; a
+//! PROGRAM's instance before the first cycle and its stimulus, `super::fb_init`) and
 //! when the POU first runs (an instance that initialisation does not reach); a FUNCTION at each
 //! call; a derived block its bases' first ([`super::inherit`]).
 //! A variable read is one of the POU declared before it, or a global variable (not CONSTANT) of

@@ -4,14 +4,23 @@
 //!
 //! Input: the file's text and its ST tokens and lexer problems. Output: E0023 at the first SCL mark,
 //! or nothing. Invariants: only constructs that are invalid IEC 61131-3 ST count as marks (a `#`
-//! that starts a name; a double-quoted literal followed by `.` and a name), so a valid ST file is
-//! never reported.
+//! that starts a name; a double-quoted literal followed by `.` and a name; a double-quoted literal
+//! right after a block keyword, `FUNCTION_BLOCK "Counter"`), so a valid ST file is never reported.
 
 use super::lexer::{Problem, Tok, Token};
 use crate::FileId;
 use diagnostics::{code, Diagnostic, Span};
 
-/// E0023 when the text shows SCL's `#local` or `"DataBlock".member`.
+/// The block keywords of an S7-SCL source, whose name may be quoted (`FUNCTION_BLOCK "Counter"`).
+const SCL_BLOCKS: [&str; 5] = [
+    "FUNCTION_BLOCK",
+    "FUNCTION",
+    "ORGANIZATION_BLOCK",
+    "DATA_BLOCK",
+    "TYPE",
+];
+
+/// E0023 when the text shows SCL's `#local`, `"DataBlock".member` or a quoted block name.
 pub(super) fn siemens_scl(
     file: FileId,
     src: &str,
@@ -44,17 +53,28 @@ pub(super) fn siemens_scl(
             )),
             _ => None,
         });
-    let (start, end, what) = match (hash, quoted) {
-        (Some(a), Some(b)) => {
-            if a.0 <= b.0 {
-                a
-            } else {
-                b
-            }
+    // `FUNCTION_BLOCK "Counter"`, `ORGANIZATION_BLOCK "Main"`: S7-SCL and TIA Portal sources name
+    // a block in double quotes (a symbol), which no IEC 61131-3 POU header allows (round 33: before,
+    // E0307 inside the header, or E1095 naming 4CONTROL at the block's SCL `CONST` section)
+    let block_name = toks.windows(2).find_map(|w| match (&w[0].tok, &w[1].tok) {
+        (Tok::Ident | Tok::Kw(_), Tok::Str(true, _))
+            if SCL_BLOCKS.iter().any(|b| {
+                src.get(w[0].range.clone())
+                    .is_some_and(|x| x.eq_ignore_ascii_case(b))
+            }) =>
+        {
+            Some((
+                w[0].range.start,
+                w[1].range.end,
+                "SCL's block header with a quoted name",
+            ))
         }
-        (Some(a), None) | (None, Some(a)) => a,
-        (None, None) => return None,
-    };
+        _ => None,
+    });
+    let (start, end, what) = [hash, quoted, block_name]
+        .into_iter()
+        .flatten()
+        .min_by_key(|m| m.0)?;
     Some(
         Diagnostic::error(
             code::E0023,
