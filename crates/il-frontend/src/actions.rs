@@ -21,6 +21,9 @@
 //! E3135. Inside the program itself, `PLC_PRG.Act();` is its own call `Act();`, inlined before
 //! `link` runs (`st::lower::own_name`, [`drop_own_name`]); what reaches `link` so (an IL call with
 //! arguments, `CAL PLC_PRG.Act(x := 1)`) stays E3135.
+//! An instance that is a program's variable, named through the program (`MAIN.inst.M();`, a
+//! property's accessor called for `MAIN.inst.P := v;`; CODESYS and TwinCAT, W1413), is linked as
+//! the instance it names, from any POU.
 
 use crate::ast::{
     Accessor, Action, ArgDir, CallArgs, CompilationUnit, Condition, FormalArg, Ident, IlStmt,
@@ -466,6 +469,14 @@ impl Scope<'_> {
                 (Accessor::Field(m), rest) => (self.globals.get(&m.key())?, rest),
                 _ => return None,
             },
+            // `MAIN.inst.M`, `MAIN.inst.P := v`: an instance of a program's variable named
+            // through the program's one instance (CODESYS, TwinCAT; W1413), from any POU
+            None if self.kinds.get(&key) == Some(&PouKind::Program) => {
+                match prefix.split_first()? {
+                    (Accessor::Field(m), rest) => (self.pou_vars.get(&key)?.get(&m.key())?, rest),
+                    _ => return None,
+                }
+            }
             None => return None,
         };
         for a in prefix {

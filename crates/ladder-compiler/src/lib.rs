@@ -30,6 +30,7 @@ pub mod testgen;
 pub mod twincat;
 pub(crate) mod twincat_cfc;
 pub(crate) mod twincat_nwl;
+pub(crate) mod twincat_operators;
 pub(crate) mod twincat_sfc;
 pub mod values;
 pub mod var_config;

@@ -233,6 +233,21 @@ pub fn read_project(ctx: &mut Ctx, root: &Element) -> CompilationUnit {
             );
             return unit;
         }
+        // TwinCAT 3's old object archive (`<Single ... Method="IArchivable">`, the form early
+        // TwinCAT 3 builds saved `.TcPOU`/`.TcTTO` in before `<TcPlcObject>`): a serialized
+        // object, neither a TwinCAT source file ladderc reads nor PLCopen XML
+        if root.name() == "Single" && root.attr("Method") == Some("IArchivable") {
+            let at = ctx.tag(root);
+            ctx.diags.push(
+                Diagnostic::error(
+                    code::E3002,
+                    "a TwinCAT object saved in the old `<Single>` archive form (early TwinCAT 3 builds), which ladderc does not read",
+                )
+                .at(at)
+                .with_hint("open the project in a current TwinCAT 3.1 and save it (each object is then written as `<TcPlcObject>`), or export the POUs as PLCopen XML"),
+            );
+            return unit;
+        }
         ctx.error(
             code::E3002,
             ctx.tag(root),

@@ -17,7 +17,8 @@
 //! a box runs after the boxes whose outputs it reads, and separate networks run from top to bottom,
 //! then from left to right (by their topmost, leftmost element); so does an element with nothing
 //! before it inside a network. A function block or program box is a call statement, its outputs read
-//! as `inst.Q`; an operator or function box is the expression of its result, written where an input
+//! as `inst.Q`; an operator or function box (an operator by its IEC name or its symbol, `SUB` or `-`:
+//! `crate::twincat_operators`) is the expression of its result, written where an input
 //! or output element reads it; an output element is an assignment (a set or reset output writes
 //! TRUE or FALSE when its input is TRUE); a negated pin negates what passes it.
 //! Invariants: never panics; an element, call kind, EN/ENO box, explicit execution order or
@@ -556,7 +557,9 @@ impl Chart<'_, '_, '_, '_> {
         el: &Element,
     ) -> Res<Vec<Tok>> {
         let at = el.tag_start();
-        let upper = type_name.to_ascii_uppercase();
+        // an operator box shows its IEC name or its symbol (`-` is SUB): `twincat_operators`
+        let upper = crate::twincat_operators::iec_name(type_name)
+            .map_or_else(|| type_name.to_ascii_uppercase(), str::to_string);
         let infix = match upper.as_str() {
             "AND" => Some("AND"),
             "OR" => Some("OR"),

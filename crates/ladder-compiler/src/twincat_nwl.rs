@@ -1507,27 +1507,12 @@ fn operator_type(node: &Element, call: &str) -> Option<String> {
     (!first.trim().is_empty() && types.all(|t| t == first)).then_some(first)
 }
 
-/// A box's call type, a comparison's long name as TwinCAT 3.1.4022 writes it (`Greater`, `Equal`
-/// beside BoxType `>`, `=`) read as the short one later versions write (`Gt`, `Eq`), when the box's
-/// type names the same comparison (its symbol or IEC name).
+/// A box's call type, an operator saved under another name (`Minus` beside `-`, `Greater` beside
+/// `>`) read as the short one later versions write (`Sub`, `Gt`): [`crate::twincat_operators`].
 fn call_type(node: &Element) -> String {
     let call = string(node, "CallType").unwrap_or_default();
-    let (short, symbol, iec) = match call.as_str() {
-        "Greater" => ("Gt", ">", "GT"),
-        "GreaterEqual" | "GreaterOrEqual" => ("Ge", ">=", "GE"),
-        "Equal" => ("Eq", "=", "EQ"),
-        "NotEqual" | "Unequal" => ("Ne", "<>", "NE"),
-        "LessEqual" | "LessOrEqual" => ("Le", "<=", "LE"),
-        "Less" => ("Lt", "<", "LT"),
-        _ => return call,
-    };
     let box_type = string(node, "BoxType").unwrap_or_default();
-    let box_type = box_type.trim();
-    if box_type == symbol || box_type.eq_ignore_ascii_case(iec) {
-        short.to_string()
-    } else {
-        call
-    }
+    crate::twincat_operators::call_type(&call, &box_type)
 }
 
 /// Operators whose result is BOOL.

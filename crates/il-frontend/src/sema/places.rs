@@ -1307,6 +1307,25 @@ impl Body<'_, '_> {
                             .filter(|p| p.1 != ParamDir::Internal && !p.0.starts_with("__"))
                             .map(|p| p.0.clone())
                             .collect();
+                        // a block without inputs or outputs: the variables it has (CODESYS and
+                        // TwinCAT reach them, W1412), never an empty list
+                        let hint = if names.is_empty() {
+                            let vars: Vec<&str> = params
+                                .iter()
+                                .map(|p| p.0.as_str())
+                                .filter(|n| !n.starts_with("__"))
+                                .collect();
+                            if vars.is_empty() {
+                                format!("{tname} declares no variables")
+                            } else {
+                                format!(
+                                    "{tname} has no inputs or outputs; its variables: {}",
+                                    vars.join(", ")
+                                )
+                            }
+                        } else {
+                            format!("parameters of {tname}: {}", names.join(", "))
+                        };
                         self.a
                             .error(
                                 code::E1011,
@@ -1314,7 +1333,7 @@ impl Body<'_, '_> {
                                 format!("{tname} has no input or output `{}`", f.name),
                             )
                             .label("unknown parameter")
-                            .hint(format!("parameters of {tname}: {}", names.join(", ")));
+                            .hint(hint);
                         None
                     }
                 }
