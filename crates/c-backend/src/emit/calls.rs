@@ -150,7 +150,7 @@ impl Gen<'_> {
             b.indent += 1;
         }
         let mut outputs = Vec::new();
-        let mut shortened = Vec::new();
+        let mut after_call = Vec::new();
         let mut eno_output = Vec::new();
         for binding in &info.args {
             if declared_eno && binding.output && binding.param.eq_ignore_ascii_case("ENO") {
@@ -185,8 +185,43 @@ impl Gen<'_> {
                         };
                         if let Some(cut) = param.and_then(|p| self.shorter_string_in_out(&place, p))
                         {
-                            shortened.push(cut);
+                            after_call.push(cut);
                         }
+                    }
+                    // a located variable of an elementary type (`lamp AT %QX4.3 : BOOL`,
+                    // `count AT %MW10 : INT`), or a bit of one: a variable (IEC 61131-3 ed. 3,
+                    // 6.5.5) a VAR_IN_OUT takes (6.6.1.2.2). The process image has no C address
+                    // of the variable's type (a bit, a byte-aligned word), so the instance is
+                    // given the address of a copy kept for this call site (a C static: the
+                    // instance keeps it between calls, as it keeps any in-out's address), the
+                    // value copied in before the call and the block's writes copied back into
+                    // the process image when it returns (a FUNCTION's likewise, round 32;
+                    // before round 33: E2005)
+                    Some(place @ (Place::Loc { .. } | Place::Part { .. }))
+                        if place.ty().elementary().is_some() =>
+                    {
+                        let param = match fb {
+                            FbType::User(id) => self
+                                .pou_var(id, &binding.param)
+                                .map(|v| v.ty.clone())
+                                .filter(|t| t.elementary().is_some()),
+                            FbType::Standard(_) => None,
+                        };
+                        let t = b.temp();
+                        let Some((param, decl)) = param.and_then(|p| {
+                            let decl = ctypes::declare(self.model, &p, &t)?;
+                            Some((p, decl))
+                        }) else {
+                            self.unsupported(o.span(), "this argument for an IN_OUT parameter");
+                            continue;
+                        };
+                        let raw = self.fb_param_raw(&lv, fb, &binding.param);
+                        let value = self.read_owned(place.clone(), &param);
+                        b.line_fmt(format_args!("static {decl};"));
+                        b.line_fmt(format_args!("{t} = {value};"));
+                        b.line_fmt(format_args!("{raw} = &{t};"));
+                        let back = convert(&t, &param, place.ty());
+                        after_call.push(self.store(&place, &back));
                     }
                     _ => self.unsupported(o.span(), "this argument for an IN_OUT parameter"),
                 }
@@ -210,7 +245,7 @@ impl Gen<'_> {
             b.line(&format!("{field} = 1;"));
         }
         b.line(&invoke(self, &lv, fb));
-        for cut in shortened {
+        for cut in after_call {
             b.line(&cut);
         }
         self.store_outputs(b, &lv, fb, &outputs, args);

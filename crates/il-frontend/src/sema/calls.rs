@@ -1215,7 +1215,7 @@ impl Body<'_, '_> {
                     self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                     self.coerce(&t, &p.ty, s, |b, from, to| {
                         if b.a.passing_any_address {
-                            return any_address_refused(b, s, &pname, &fname, from);
+                            return any_address_refused(b, &t, s, &pname, &fname, from);
                         }
                         b.a.error(
                             code::E1012,
@@ -1485,7 +1485,7 @@ impl Body<'_, '_> {
                     self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                     self.coerce(&t, &p.2, s, |b, from, to| {
                         if b.a.passing_any_address {
-                            return any_address_refused(b, s, &pname, &tn, from);
+                            return any_address_refused(b, &t, s, &pname, &tn, from);
                         }
                         b.a.error(
                             code::E1012,
@@ -1665,7 +1665,7 @@ impl Body<'_, '_> {
                 self.a.passing_any_address = crate::st::any_inputs::is_address_input(&pname);
                 self.coerce(&t, &pty, s, |b, from, to| {
                     if b.a.passing_any_address {
-                        return any_address_refused(b, s, &pn, &cn, from);
+                        return any_address_refused(b, &t, s, &pn, &cn, from);
                     }
                     let hint = match ltime_timer(&cn) {
                         Some(l) if pn == "PT" && from == "LTIME" => format!(
@@ -2011,8 +2011,15 @@ fn is_hidden_varlen(p: &str) -> bool {
 
 /// E1068 at an ANY input's argument whose bytes `.pValue` may not reach (`pname` is the hidden
 /// `In__PVALUE`, `crate::st::any_inputs`): its type holds a reference or a function block instance,
-/// which bytes written through a `POINTER TO BYTE` could forge.
-fn any_address_refused(b: &mut Body, at: Span, pname: &str, callee: &str, from: &str) {
+/// which bytes written through a `POINTER TO BYTE` could forge; nothing when `t` holds a type that
+/// was not found (its E1003 is the one error).
+fn any_address_refused(b: &mut Body, t: &Ty, at: Span, pname: &str, callee: &str, from: &str) {
+    // (an argument whose type holds one that was not found: that type's E1003 is the cause)
+    if let Ty::Known(t) = t {
+        if super::typing::holds_unknown(t, &b.a.model) {
+            return;
+        }
+    }
     let input = &pname[..pname
         .len()
         .saturating_sub(crate::st::any_inputs::VALUE.len())];

@@ -118,6 +118,30 @@ pub fn holds_no_reference(t: &Type, model: &super::model::Model) -> bool {
     go(t, model, 0)
 }
 
+/// Whether a value of type `t` holds (as what it refers to, an array's element or a structure's
+/// field, at any depth) a type that was not found: that type's own error (E1003) is the cause of
+/// what it makes fail, not the use.
+pub fn holds_unknown(t: &Type, model: &super::model::Model) -> bool {
+    fn go(t: &Type, model: &super::model::Model, depth: u32) -> bool {
+        if depth > 64 {
+            return false;
+        }
+        match t {
+            Type::Error => true,
+            Type::Ref(target) => go(target, model, depth + 1),
+            Type::Array { element, .. } => go(element, model, depth + 1),
+            Type::Struct(id) => match &model.user_type(*id).def {
+                super::model::UserTypeDef::Struct { fields } => {
+                    fields.iter().any(|f| go(&f.ty, model, depth + 1))
+                }
+                _ => false,
+            },
+            _ => false,
+        }
+    }
+    go(t, model, 0)
+}
+
 /// The type all `types` widen to, if one of them is that type (`INT` and `DINT` give `DINT`).
 pub fn common_type(types: &[Type]) -> Option<Type> {
     let first = types.iter().find(|t| !t.is_error())?;

@@ -8,7 +8,12 @@
 //! input is hidden inputs of the function, `In__DISIZE : DINT`, `In__TYPECLASS : INT` and, when
 //! the function's body reads `In.pValue` or passes `In` on to another ANY input,
 //! `In__PVALUE : POINTER TO BYTE` ([`split_decls`]; a METHOD's likewise, before it joins its
-//! block: [`split_method_inputs`]); a call
+//! block: [`split_method_inputs`]; a FUNCTION_BLOCK's likewise, always with the address: Beckhoff
+//! Infosys "ANY and `ANY_<type>`" allows ANY inputs in function blocks from TwinCAT 3.1 build 4026,
+//! CODESYS "Data Type: ANY" too). A block instance's call `inst(In := x)` gives the address for
+//! that call only (call-scoped, so `x` may be a VAR_TEMP or a method's variable, or the caller's
+//! own ANY input passed on), reset to NULL when the call returns; size and class stay the last
+//! call's, as any input does. A call
 //! `F(In := x)` (formal or positional) passes `SIZEOF(x)`, the class of `x`'s type and `ADR(x)`
 //! ([`rewrite`], before the statement is lowered), so `.pValue` is a bounded pointer to the
 //! argument's bytes (sema refuses, E0305, an argument with no address for the whole run, as `ADR`
@@ -19,7 +24,7 @@
 //!
 //! Input: the parsed units (before the declarations are indexed), then each ST statement being
 //! lowered. Output: the functions' ANY inputs split; the statements rewritten.
-//! Invariants: only FUNCTIONs' VAR_INPUTs of the ANY family are split; a statement without such a
+//! Invariants: only VAR_INPUTs of the ANY family of FUNCTIONs, FUNCTION_BLOCKs and METHODs are split; a statement without such a
 //! call or use is not touched; a rewritten statement holds no rewritable part any more (the
 //! lowering may run the rewrite again on it).
 
@@ -149,10 +154,10 @@ fn class_of(env: &Env, ty: &TypeRef) -> i128 {
     }
 }
 
-/// Splits each ANY-family VAR_INPUT of every FUNCTION into its hidden inputs (see the module
-/// documentation): size and class, and the address when the function's body (`body_of` its
-/// name's position) needs it (`reads_address`). The split inputs keep their order among the
-/// others.
+/// Splits each ANY-family VAR_INPUT of every FUNCTION and FUNCTION_BLOCK into its hidden inputs
+/// (see the module documentation): size and class, and the address when the function's body
+/// (`body_of` its name's position) needs it (`reads_address`; a block's always). The split inputs
+/// keep their order among the others.
 pub fn split_decls<'b>(
     units: &mut [CompilationUnit],
     body_of: &dyn Fn(crate::Span) -> Option<&'b str>,
@@ -161,12 +166,15 @@ pub fn split_decls<'b>(
         let LibraryElement::Pou(p) = item else {
             continue;
         };
-        if p.kind != PouKind::Function {
-            continue;
-        }
+        // (a FUNCTION_BLOCK's always with the address: its methods and actions may read it too)
+        let block = match p.kind {
+            PouKind::Function => false,
+            PouKind::FunctionBlock => true,
+            _ => continue,
+        };
         let body = body_of(p.name.span).unwrap_or("");
         for b in p.var_blocks.iter_mut() {
-            split_block(b, body, false);
+            split_block(b, body, block);
         }
     }
 }
@@ -325,6 +333,9 @@ struct Callee {
     name: String,
     inputs: Vec<Input>,
     addresses: Vec<String>,
+    /// A FUNCTION_BLOCK instance: the address is made for the call only (call-scoped, reset to
+    /// NULL when the call returns: `PouLowering::call_statement`).
+    instance: bool,
 }
 
 /// The inputs of function `f` (see [`Callee`]); `None` when `f` is no function with ANY inputs.
@@ -334,6 +345,41 @@ fn inputs_of(env: &Env, f: &str) -> Option<Callee> {
         return None;
     }
     split_inputs(f, i.vars.iter().map(|(n, k, _)| (n.as_str(), *k)), "")
+}
+
+/// The inputs of the FUNCTION_BLOCK instance a call statement calls (`inst(...)`, `a[i](...)`,
+/// `s.fb(...)`), its own (not its methods' hidden `__M_<M>_<In>`); `None` when the block has no
+/// ANY input.
+fn instance_inputs(env: &Env, callee: &Place) -> Option<Callee> {
+    let TypeRef::Named(b) = env.resolve(&env.place_type(callee)?) else {
+        return None;
+    };
+    let i = env.decls.pou(&b.name)?;
+    if i.kind != PouKind::FunctionBlock {
+        return None;
+    }
+    let mut c = split_inputs(
+        &b.name,
+        i.vars
+            .iter()
+            .filter(|(n, _, _)| {
+                !n.to_ascii_uppercase()
+                    .starts_with(crate::actions::METHOD_PREFIX)
+            })
+            .map(|(n, k, _)| (n.as_str(), *k)),
+        "",
+    )?;
+    c.instance = true;
+    Some(c)
+}
+
+/// Whether `input` is the hidden address input of a FUNCTION_BLOCK's own ANY input (`In__PVALUE`),
+/// not of one of its methods' (`__M_<M>_In__PVALUE`).
+pub fn is_block_address_input(input: &str) -> bool {
+    is_address_input(input)
+        && !input
+            .to_ascii_uppercase()
+            .starts_with(crate::actions::METHOD_PREFIX)
 }
 
 /// The callee of a call inside an expression, `F(...)`: a function, or a method of the block
@@ -492,6 +538,7 @@ fn split_inputs<'v>(
         name: name.to_string(),
         inputs: out,
         addresses,
+        instance: false,
     })
 }
 
@@ -528,7 +575,10 @@ fn needs(env: &Env, s: &Stmt) -> bool {
                     return true;
                 }
             }
-            if method_inputs_of(env, callee).is_some() || may_name_any_method(env, callee) {
+            if method_inputs_of(env, callee).is_some()
+                || may_name_any_method(env, callee)
+                || instance_inputs(env, callee).is_some()
+            {
                 return true;
             }
             stack.extend(args.iter().map(|a| &a.value));
@@ -608,7 +658,10 @@ pub fn rewrite(
                 PlaceBase::Name(n) if callee.accessors.is_empty() => inputs_of(env, &n.name),
                 _ => None,
             };
-            match function.or_else(|| method_inputs_typed(env, callee, Some(type_of))) {
+            match function
+                .or_else(|| method_inputs_typed(env, callee, Some(type_of)))
+                .or_else(|| instance_inputs(env, callee))
+            {
                 Some(c) => r.call(&c, args),
                 // a method with ANY inputs on a place whose block is not known here (an
                 // INTERFACE's method, a reference of another kind): its arguments would land
@@ -973,9 +1026,16 @@ impl Rewrite<'_, '_> {
             // or a field: sema refuses, E0305, what has no address for the whole run)
             let value_input = format!("{input}{VALUE}");
             if f.addresses.contains(&value_input.to_ascii_uppercase()) {
+                // (an instance's: for the call only, so that `x` may be a VAR_TEMP or a method's
+                // variable; the lowering resets it to NULL when the call returns)
+                let adr = if f.instance {
+                    super::varlen::CALL_ADDRESS
+                } else {
+                    "ADR"
+                };
                 let address = Expr {
                     kind: ExprKind::Call {
-                        name: Ident::new("ADR", span),
+                        name: Ident::new(adr, span),
                         args: vec![Arg {
                             name: None,
                             dir: ArgDir::Input,

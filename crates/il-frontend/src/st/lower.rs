@@ -1773,6 +1773,34 @@ impl<'d> PouLowering<'d> {
             out,
             diags,
         );
+        // the ANY inputs' addresses the call was given (`super::any_inputs`: call-scoped) are
+        // reset to NULL when it returns: `.pValue` is valid while the call runs
+        let any_addresses: Vec<String> = match fb_ty.as_ref().map(|t| self.env().resolve(t)) {
+            Some(TypeRef::Named(t)) => self
+                .decls
+                .pou(&t.name)
+                .filter(|p| p.kind == PouKind::FunctionBlock)
+                .map(|p| {
+                    p.vars
+                        .iter()
+                        .filter(|(n, k, _)| {
+                            *k == crate::ast::VarKind::Input
+                                && super::any_inputs::is_block_address_input(n)
+                        })
+                        .map(|(n, _, _)| n.clone())
+                        .collect()
+                })
+                .unwrap_or_default(),
+            _ => Vec::new(),
+        };
+        let reset: Vec<VarRef> = any_addresses
+            .into_iter()
+            .map(|n| {
+                let mut v = instance.clone();
+                v.accessors.push(il::Accessor::Field(Ident::new(n, span)));
+                v
+            })
+            .collect();
         out.push(instr(
             InstrKind::Call {
                 cond: Condition::Always,
@@ -1781,6 +1809,18 @@ impl<'d> PouLowering<'d> {
             },
             span,
         ));
+        for v in reset {
+            out.push(ld(
+                Operand::Ref(Box::new(il::RefOperand {
+                    of: None,
+                    span,
+                    call_scoped: false,
+                    address_of: false,
+                })),
+                span,
+            ));
+            out.push(simple(Op::St, false, Some(Operand::Var(v)), span));
+        }
     }
 
     /// Arguments of a call as IL operands (inputs that are not plain operands go through temporaries,
