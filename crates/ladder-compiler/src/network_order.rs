@@ -27,6 +27,10 @@ use crate::graph::{Kind, Node};
 /// Two elements whose `y` differ by less than this are on one row (Beremiz's `SortInstances`).
 pub const ROW_TOLERANCE: i64 = 10;
 
+/// A network's sort key: the smallest non-zero `executionOrderId` (`u32::MAX` without one), the
+/// rank of its place, its first element in document order, its first node.
+type NetKey = (u32, usize, usize, usize);
+
 /// Whether `n` ends a rung: the elements whose place orders the networks.
 fn is_output(n: &Node<'_>) -> bool {
     match n.kind {
@@ -89,7 +93,7 @@ pub fn sort(nodes: &[Node<'_>], nets: &mut [Vec<usize>]) {
             rank[k] = r;
         }
     }
-    let mut keyed: Vec<((u32, usize, usize, usize), Vec<usize>)> = nets
+    let mut keyed: Vec<(NetKey, Vec<usize>)> = nets
         .iter_mut()
         .enumerate()
         .map(|(k, net)| {
