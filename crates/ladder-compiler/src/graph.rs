@@ -5,8 +5,8 @@
 //! components, connectors joined to their continuations by name) in execution order.
 //! Order (documented in the README): networks by the smallest non-zero `executionOrderId` of their
 //! elements (a body numbered from 0, its ids distinct, counts 0 as the first position:
-//! `numbered_from_zero`), networks without one after them by the top-most then left-most element
-//! position (y, then x);
+//! `numbered_from_zero`), networks without one after them by the row, then x, of their first output
+//! element, as Beremiz orders them ([`crate::network_order`]);
 //! inside a network, data flow first, ties broken the same way, then by localId (an element without
 //! a number in a numbered body where its first numbered reader runs: `lower_order`).
 //! Invariants: every [`Wire::from`] indexes [`Graph::nodes`]; every node but a power rail belongs to exactly
@@ -1002,36 +1002,7 @@ fn networks(
                     .all(|&i| matches!(nodes[i].kind, Kind::LeftRail | Kind::RightRail))
         })
         .collect();
-    let key = |net: &Vec<usize>| {
-        let exec = net
-            .iter()
-            .filter_map(|&i| nodes[i].exec_order.filter(|o| *o > 0))
-            .min()
-            .unwrap_or(u32::MAX);
-        let top = net
-            .iter()
-            .map(|&i| (nodes[i].y, nodes[i].x))
-            .min()
-            .unwrap_or((0, 0));
-        // the first element in document order, counting the rail a rung hangs on (a rung drawn
-        // after its rail and a label without position keep their document order)
-        let first = net
-            .iter()
-            .flat_map(|&i| {
-                std::iter::once(i).chain(
-                    nodes[i]
-                        .wires()
-                        .map(|w| w.from)
-                        .filter(|&f| matches!(nodes[f].kind, Kind::LeftRail)),
-                )
-            })
-            .min()
-            .unwrap_or(net[0]);
-        (exec, top.0, top.1, first, net[0])
-    };
-    // Each key is computed once; keys are unique (`net[0]` is in one network only), so the order is
-    // the same as a stable sort's.
-    nets.sort_by_cached_key(key);
+    crate::network_order::sort(nodes, &mut nets);
     nets
 }
 

@@ -23,6 +23,7 @@ pub mod graph;
 pub mod il_body;
 pub mod locate;
 pub mod lower;
+pub mod network_order;
 pub mod project;
 pub mod sfc;
 pub mod st_body;

@@ -174,7 +174,7 @@ fn emitted_il_parses_back() {
 fn chart_mistakes_are_reported_in_the_engineers_terms() {
     let (_, diags) = compile("errors.xml", &sfc_fixture("errors.xml"));
     for code in [
-        "E3120", "E3121", "E3122", "E3123", "E3124", "E3125", "E3126", "E3127", "E3128", "E3130",
+        "E3120", "W1464", "E3122", "E3123", "E3124", "E3125", "E3126", "E3127", "E3128", "E3130",
         "E3131",
     ] {
         assert!(diags.contains(code), "{code} missing:\n{diags}");

@@ -194,6 +194,30 @@ pub(crate) fn report(
     }));
 }
 
+/// W1464 at a step that no transition follows (a final step). IEC 61131-3 (ed. 2 2.6.2-2.6.3,
+/// ed. 3 6.7.2-6.7.3) asks for a transition between two steps, not for a successor of every step,
+/// and Beremiz/matiec compile such a step (Acabaxi/Simple's Beremiz build holds four): it stays
+/// active once reached, its actions running every scan. Before round 33 this was the error E3121.
+pub(crate) fn warn_final_step(ctx: &mut Ctx, span: Span, pou: &str, id: Option<&str>, name: &str) {
+    ctx.report(
+        Diagnostic::warning(
+            code::W1464,
+            format!("step `{name}` has no following transition: once active it stays active"),
+        )
+        .at(span)
+        .with_primary_label("a final step")
+        .with_hint(
+            "a step that ends its sequence is allowed (IEC 61131-3 asks for no successor); if \
+             the chart should go on, connect a transition below the step",
+        )
+        .with_xml(XmlContext {
+            pou: Some(pou.to_string()),
+            local_id: id.map(str::to_string),
+            network: None,
+        }),
+    );
+}
+
 fn pos(e: &Element, axis: &str) -> i64 {
     e.child("position")
         .and_then(|p| p.attr(axis))
@@ -489,7 +513,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
     }
     transitions.sort_by_key(|t| t.order);
 
-    // Steps without a successor (E3121).
+    // Steps without a successor: final steps (W1464).
     for n in &nodes {
         if n.kind != NodeKind::Step {
             continue;
@@ -504,14 +528,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
             .is_some_and(|s| steps[s].initial && !transitions.iter().any(|t| t.post.contains(&s)));
         if !has_successor && !lone_initial {
             let name = n.step.map(|s| steps[s].name.clone()).unwrap_or_default();
-            report(
-                ctx,
-                code::E3121,
-                ctx.tag(n.el),
-                pou,
-                Some(&n.id),
-                format!("step `{name}` has no following transition: once active it stays active"),
-            );
+            warn_final_step(ctx, ctx.tag(n.el), pou, Some(&n.id), &name);
         }
     }
     if !steps.is_empty() && !steps.iter().any(|s| s.initial) {
@@ -938,8 +955,8 @@ mod tests {
         // (by the jump) A.
         assert_eq!(names(&c, &c.transitions[0].post), ["D"]);
         assert_eq!(names(&c, &c.transitions[1].post), ["C", "A"]);
-        // C and D have no following transition.
+        // C and D have no following transition: final steps, a warning each.
         let codes: Vec<String> = diags.iter().map(|d| d.code.to_string()).collect();
-        assert_eq!(codes, ["E3121", "E3121"], "{codes:?}");
+        assert_eq!(codes, ["W1464", "W1464"], "{codes:?}");
     }
 }

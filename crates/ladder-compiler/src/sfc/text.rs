@@ -337,23 +337,13 @@ pub fn lower(
             });
         }
     }
-    // every step needs a transition leaving it (E3121, as for XML charts), but an initial step
-    // that no transition enters either: a network of one step, always active (IEC 61131-3 Annex
-    // F's gravel example)
+    // a step no transition leaves is a final step (W1464, as for XML charts), but an initial
+    // step that no transition enters either is a network of one step, always active (IEC 61131-3
+    // Annex F's gravel example): no warning
     for (k, s) in tc.steps.iter().enumerate() {
         let lone_initial = s.initial && !transitions.iter().any(|t| t.post.contains(&k));
         if !lone_initial && !transitions.iter().any(|t| t.pre.contains(&k)) {
-            report(
-                &mut ctx,
-                code::E3121,
-                span(&s.name_range),
-                &pou_name,
-                None,
-                format!(
-                    "step `{}` has no following transition: once active it stays active",
-                    s.name
-                ),
-            );
+            super::chart::warn_final_step(&mut ctx, span(&s.name_range), &pou_name, None, &s.name);
         }
     }
     let chart = Chart {
