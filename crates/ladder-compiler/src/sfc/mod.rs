@@ -81,6 +81,12 @@ pub mod names {
     pub fn action_part(action: &str, part: &str) -> String {
         format!("__sfc_{part}_{action}")
     }
+    /// Whether `name` is the memory of an action's final scan (`__sfc_Qm_<action>`, also in the
+    /// chart of a POU's action, [`in_action`]): the chart has an action IEC's final scan runs again.
+    pub fn is_final_scan_memory(name: &str) -> bool {
+        name.strip_prefix("__sfc_")
+            .is_some_and(|rest| rest.starts_with("Qm_") || rest.contains("__Qm_"))
+    }
     /// The name a hidden variable `hidden` of the chart of action `action` (a POU's action whose
     /// body is SFC) takes in the POU: `__sfc_X_Fill` of action `Sequence` is
     /// `__sfc_Sequence__X_Fill`. An identifier never holds two underscores in a row, so the name
@@ -432,8 +438,8 @@ pub fn lower_chart<'e, 'a>(
 /// `ACTIONS` block after the POU, a TwinCAT POU's `<Action>` objects) once the chart's `CAL`s of
 /// them are inlined. IEC 61131-3 ed. 3 8.3.2 (ed. 2 2.6.2): `step.X`, `step.T`; Beckhoff Infosys
 /// "Implicit variables" and CODESYS "Implicit Variables": `<stepname>.x`, `<stepname>.t`, readable
-/// in every action of the SFC object, and `._x`, `._t` ([`step_flags`]).
-/// A field of a step that is none of its flags is one E1021 in `diags` ([`unknown_step_flags`]).
+/// in every action of the SFC object, and `._x`, `._t` (`step_flags`).
+/// A field of a step that is none of its flags is one E1021 in `diags` (`unknown_step_flags`).
 pub fn rename_step_flags(stmts: &mut [IlStmt], steps: &[String], diags: &mut Diagnostics) {
     if steps.is_empty() {
         return;
