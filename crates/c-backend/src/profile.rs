@@ -61,7 +61,9 @@ pub enum AddressUnit {
 
 /// What one unit of a number converted to or from TIME (or LTIME) is: `REAL_TO_TIME(1.5)`,
 /// `DINT_TO_TIME(15)`, `TIME_TO_REAL(t)`. IEC 61131-3 leaves it to the implementation (ed. 2
-/// 2.5.1.5.1, ed. 3 6.6.2.5.6 give no unit for these conversions).
+/// 2.5.1.5.1, ed. 3 6.6.2.5.6 give no unit for these conversions), and vendors differ: milliseconds
+/// in CODESYS and TwinCAT, seconds in matiec, 10 ms in Panasonic's FPWIN Pro (its `TIME_TO_DWORD`
+/// help: "The time 10ms corresponds to the value 1").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
 pub enum TimeNumberUnit {
     /// A millisecond: CODESYS and TwinCAT (`TIME_TO_DWORD` counts ms), OSCAT; ladderc's default.
