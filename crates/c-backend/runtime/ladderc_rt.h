@@ -37,6 +37,11 @@
 #ifndef LADDERC_M_FLAT_SIZE
 #define LADDERC_M_FLAT_SIZE LADDERC_M_SIZE
 #endif
+/* The nanoseconds of one unit of a number converted to or from TIME (the profile's
+   `time_number_unit`: milliseconds by default, seconds under the OpenPLC profile). */
+#ifndef LADDERC_TIME_UNIT_NS
+#define LADDERC_TIME_UNIT_NS INT64_C(1000000)
+#endif
 
 /* ------------------------------------------------------------------ elementary types */
 typedef uint8_t IEC_BOOL; /* always 0 or 1 */

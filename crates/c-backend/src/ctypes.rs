@@ -330,8 +330,11 @@ pub fn const_elementary(model: &Model, e: Elementary, v: &ConstValue) -> Option<
         ConstValue::Int(i) => {
             if e.is_real() {
                 real_literal(e, *i as f64)
+            } else if e.is_duration() && i.unsigned_abs() <= 9_000_000_000 {
+                // an integer written for a TIME: the profile's unit (`LADDERC_TIME_UNIT_NS`,
+                // milliseconds or seconds), as the conversions count; 9e9 s still fit 64 bits
+                cfmt!("((IEC_LINT)INT64_C({i}) * LADDERC_TIME_UNIT_NS)")
             } else if e.is_duration() {
-                // an integer written for a TIME: milliseconds (as the conversions do)
                 int_literal(E::Lint, i.saturating_mul(1_000_000))
             } else {
                 int_literal(e, *i)

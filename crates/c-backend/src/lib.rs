@@ -46,7 +46,10 @@ pub mod toolchain;
 
 pub use extensions::{Extensions, MethodFeedback, MethodLocal, PouMethod};
 pub use pipeline::{build_il, compile_il};
-pub use profile::{AddressUnit, BitNumbering, ByteOrder, Located, ProfileError, TargetProfile};
+pub use profile::{
+    AddressUnit, BitNumbering, ByteOrder, Located, ProfileError, SfcActionControl, TargetProfile,
+    TimeNumberUnit,
+};
 pub use toolchain::{
     build, build_with, run, watch_names, BuildError, BuildOptions, RunOptions, RunOutput,
 };

@@ -59,6 +59,55 @@ pub enum AddressUnit {
     PerSize,
 }
 
+/// What one unit of a number converted to or from TIME (or LTIME) is: `REAL_TO_TIME(1.5)`,
+/// `DINT_TO_TIME(15)`, `TIME_TO_REAL(t)`. IEC 61131-3 leaves it to the implementation (ed. 2
+/// 2.5.1.5.1, ed. 3 6.6.2.5.6 give no unit for these conversions), and vendors differ: milliseconds
+/// in CODESYS and TwinCAT, seconds in matiec, 10 ms in Panasonic's FPWIN Pro (its `TIME_TO_DWORD`
+/// help: "The time 10ms corresponds to the value 1").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum TimeNumberUnit {
+    /// A millisecond: CODESYS and TwinCAT (`TIME_TO_DWORD` counts ms), OSCAT; ladderc's default.
+    #[default]
+    #[serde(rename = "ms")]
+    Milliseconds,
+    /// A second: matiec's `__real_to_time`/`__int_to_time`/`__time_to_real` (its
+    /// `lib/C/iec_std_lib.h`), which Beremiz and OpenPLC compile with (`--profile openplc`).
+    #[serde(rename = "s")]
+    Seconds,
+}
+
+impl TimeNumberUnit {
+    /// Nanoseconds per unit.
+    pub fn nanoseconds(self) -> i64 {
+        match self {
+            TimeNumberUnit::Milliseconds => 1_000_000,
+            TimeNumberUnit::Seconds => 1_000_000_000,
+        }
+    }
+    /// The unit's name as the profile writes it (`ms`, `s`).
+    pub fn name(self) -> &'static str {
+        match self {
+            TimeNumberUnit::Milliseconds => "ms",
+            TimeNumberUnit::Seconds => "s",
+        }
+    }
+}
+
+/// How a sequential function chart's actions are controlled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SfcActionControl {
+    /// IEC 61131-3 (ed. 2 2.6.4.5, ed. 3 6.7.4.6, the ACTION_CONTROL block): an action's body runs
+    /// once more in the scan its `Q` falls (the final scan), and an initial step's P action runs in
+    /// the first scan (the step becomes active then). ladderc's default.
+    #[default]
+    Iec,
+    /// Beremiz and OpenPLC (matiec's generated SFC code): an action runs only while its `Q` is TRUE
+    /// (no final scan), and an initial step counts as active before the first scan, so its P action
+    /// runs only on a later activation (`--profile openplc`).
+    Beremiz,
+}
+
 /// Sizes and layout of the process image and the TM area.
 #[derive(Debug, Clone, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -88,6 +137,14 @@ pub struct TargetProfile {
     /// Optional in a profile file; the default is 16 MiB.
     #[serde(default = "default_data_bytes")]
     pub data_bytes: u64,
+    /// The unit of a number converted to or from TIME (`"ms"` or `"s"`). Optional in a profile
+    /// file; the default is milliseconds (`--profile openplc`: seconds, as matiec).
+    #[serde(default)]
+    pub time_number_unit: TimeNumberUnit,
+    /// How SFC actions are controlled (`"iec"` or `"beremiz"`). Optional in a profile file; the
+    /// default is IEC's final scan (`--profile openplc`: Beremiz's, none).
+    #[serde(default)]
+    pub sfc_action_control: SfcActionControl,
 }
 
 /// The default `data_bytes`: 16 MiB.
@@ -131,6 +188,8 @@ impl Default for TargetProfile {
             tm_bytes: 256,
             alignment: 1,
             data_bytes: DEFAULT_DATA_BYTES,
+            time_number_unit: TimeNumberUnit::Milliseconds,
+            sfc_action_control: SfcActionControl::Iec,
         })
     }
 }

@@ -27,6 +27,25 @@ pub enum ConstNum {
     Duration(i128),
 }
 
+thread_local! {
+    /// The nanoseconds of one unit of a number converted to or from TIME in a constant expression
+    /// (`DINT_TO_TIME(5)`, `TIME_TO_REAL(T#2S)`), set by [`set_time_number_unit`]: the target
+    /// profile's, so that a constant converts as the run time does (milliseconds by default).
+    static TIME_NUMBER_UNIT_NS: std::cell::Cell<i128> = const { std::cell::Cell::new(1_000_000) };
+}
+
+/// Sets the nanoseconds of one unit of a number converted to or from TIME (the target profile's
+/// `time_number_unit`: 1_000_000 for milliseconds, 1_000_000_000 for seconds); returns the one set
+/// before, to put back when the project is read. A value below 1 is taken as 1.
+pub fn set_time_number_unit(ns: i64) -> i64 {
+    let before = TIME_NUMBER_UNIT_NS.with(|u| u.replace(i128::from(ns.max(1))));
+    i64::try_from(before).unwrap_or(1_000_000)
+}
+
+fn time_unit_ns() -> i128 {
+    TIME_NUMBER_UNIT_NS.with(std::cell::Cell::get)
+}
+
 /// The constants known to the expressions of a text, by upper-case name; the values of
 /// enumerations under [`enum_key`] of theirs.
 pub type Constants = HashMap<String, ConstNum>;
@@ -322,11 +341,12 @@ fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> 
     if args.len() != 1 {
         return Err(format!("`{f}` takes 1 argument, {} given", args.len()));
     }
-    // a duration to a number counts its milliseconds, as the run time converts (truncated toward
-    // zero for an integer: TIME_TO_DINT(T#1500US) = 1)
+    // a duration to a number counts its milliseconds (the profile's unit), as the run time
+    // converts (truncated toward zero for an integer: TIME_TO_DINT(T#1500US) = 1)
+    let unit = time_unit_ns();
     let v = match (args[0], e.is_duration()) {
-        (ConstNum::Duration(d), false) if e.is_real() => ConstNum::Real(d as f64 / 1e6),
-        (ConstNum::Duration(d), false) => ConstNum::Int(d / 1_000_000),
+        (ConstNum::Duration(d), false) if e.is_real() => ConstNum::Real(d as f64 / unit as f64),
+        (ConstNum::Duration(d), false) => ConstNum::Int(d / unit),
         (v, _) => v,
     };
     if e.is_real() {
@@ -337,13 +357,13 @@ fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> 
             x
         }));
     }
-    // a number to TIME or LTIME counts milliseconds, as the run time converts (`TO_TIME(0)`,
-    // `UDINT_TO_TIME(1000)` = T#1S); a duration stays
+    // a number to TIME or LTIME counts milliseconds (the profile's unit), as the run time
+    // converts (`TO_TIME(0)`, `UDINT_TO_TIME(1000)` = T#1S); a duration stays
     if e.is_duration() {
         return match v {
-            ConstNum::Int(i) => duration(i.checked_mul(1_000_000)),
+            ConstNum::Int(i) => duration(i.checked_mul(unit)),
             ConstNum::Real(x) => {
-                let ns = (x * 1e6).round_ties_even();
+                let ns = (x * unit as f64).round_ties_even();
                 to_int(ns, f).and_then(|n| duration(Some(n)))
             }
             ConstNum::Duration(d) => duration(Some(d)),

@@ -54,7 +54,8 @@
 //! built program), [`trace_raw`] (its raw trace turned into CSV), [`stdio`] (output that ends quietly on a closed pipe), [`summary`] (the final summary)
 //! and [`xml_context`]. Beckhoff Tc2_MC2 motion: [`tc2_mc2`] (spellings), [`tc2_axis_ref`] (AXIS_REF
 //! members), [`tc2_override`] (MC_Power's Override), [`tc2_error_id`] (UDINT ErrorIDs), [`tc2_blocks`] (MC_MoveModulo, MC_Jog),
-//! [`axis_links`] (each AXIS_REF its own axis), [`block_temps`] (expressions as block inputs).
+//! [`axis_links`] (each AXIS_REF its own axis), [`block_temps`] (expressions as block inputs);
+//! `tool_semantics` (W1465, W1466: a Beremiz or OpenPLC project under a profile with other semantics).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -98,6 +99,7 @@ pub mod tc2_mc2;
 pub mod tc2_override;
 pub mod text_lists;
 mod textual_sfc;
+mod tool_semantics;
 pub mod trace_raw;
 pub mod twincat;
 pub mod user_libraries;

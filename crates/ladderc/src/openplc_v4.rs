@@ -50,6 +50,11 @@ fn project_json(session: &Session, dir: &Path) -> Option<Value> {
     matches!(kind, "plc-project" | "plc-library").then_some(v)
 }
 
+/// Whether `p` is an OpenPLC Editor v4 project: its folder or its `project.json`.
+pub(crate) fn is_project(session: &Session, p: &Path) -> bool {
+    project_json(session, p).is_some() || json_file(session, p).is_some()
+}
+
 /// `paths` with each OpenPLC Editor v4 project folder replaced by its POU files; the folders'
 /// configurations go to `configs`.
 pub fn expand(

@@ -1399,7 +1399,26 @@ impl Session {
             self.user_templates(&mut library, dir, opts.compile_templates);
         }
         self.libraries = opts.libraries.clone();
+        // the profile's semantics that the readers need: the unit of TIME as a number (constant
+        // expressions of declarations) and the SFC action control (the charts' lowering)
+        let unit_before =
+            il_frontend::const_eval::set_time_number_unit(profile.time_number_unit.nanoseconds());
+        let control_before =
+            ladder_compiler::sfc::actions::set_action_control(match profile.sfc_action_control {
+                c_backend::SfcActionControl::Iec => {
+                    ladder_compiler::sfc::actions::ActionControl::Iec
+                }
+                c_backend::SfcActionControl::Beremiz => {
+                    ladder_compiler::sfc::actions::ActionControl::Beremiz
+                }
+            });
         let units = self.load_as(paths, opts.lang);
+        il_frontend::const_eval::set_time_number_unit(unit_before);
+        ladder_compiler::sfc::actions::set_action_control(control_before);
+        if let Some(tool) = crate::tool_semantics::tool_of_inputs(self, paths, &units) {
+            crate::tool_semantics::warn_unit(&units, &profile, tool, &mut self.diags);
+            crate::tool_semantics::warn_final_scan(&units, &profile, tool, &mut self.diags);
+        }
         self.loaded_diags = self.diags.len();
         if self.diags.has_errors() && !self.only_recovered_parse_errors() {
             self.unknown_types_behind_bounds(&units, &library);

@@ -281,6 +281,12 @@ fn config_header_with(p: &TargetProfile, ext: [u32; 3]) -> String {
         // %I and %Q: four images (X and B, W, D, L) of a quarter of the flat size each
         let _ = writeln!(s, "#define LADDERC_PER_SIZE_IO 1");
     }
+    // the nanoseconds of one unit of a number converted to or from TIME (`emit::values`)
+    let _ = writeln!(
+        s,
+        "#define LADDERC_TIME_UNIT_NS INT64_C({})",
+        p.time_number_unit.nanoseconds()
+    );
     let _ = writeln!(s, "#define LADDERC_ALIGNMENT {}\n#endif", p.alignment);
     s
 }

@@ -119,8 +119,8 @@ fn conversion(from: &Type, to: &Type) -> Option<(Elementary, Elementary)> {
 }
 
 /// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest (halves
-/// to even) and saturates, LREAL to REAL overflows to an infinity, TIME, LTIME and TOD to/from numbers
-/// count milliseconds, DT and DATE seconds since 1970-01-01 (a number to DATE keeps the seconds
+/// to even) and saturates, LREAL to REAL overflows to an infinity, TIME and LTIME to/from numbers
+/// count the profile's unit (milliseconds by default), TOD milliseconds, DT and DATE seconds since 1970-01-01 (a number to DATE keeps the seconds
 /// below a day, see [`within_day`]), anything to BOOL is `<> 0`.
 pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     if f == t {
@@ -201,15 +201,18 @@ fn within_day(ns: &str, t: Elementary) -> String {
     }
 }
 
-/// The nanoseconds of one unit of the number a duration or date converts to and from: milliseconds
-/// for TIME, LTIME and TOD, seconds for DT and DATE (since 1970-01-01), as CODESYS, TwinCAT and
-/// OSCAT count them (`DT_TO_UDINT`, `TOD_TO_DWORD(t) / 3600000` for the hour); nanoseconds for
-/// edition 3's LDATE, LTOD and LDT (IEC 61131-3 edition 3, Table 10: their value is in
-/// nanoseconds); as a C integer and as a C double.
+/// The nanoseconds of one unit of the number a duration or date converts to and from: for TIME
+/// and LTIME the target profile's unit (`LADDERC_TIME_UNIT_NS` of `ladderc_config.h`: milliseconds,
+/// as CODESYS, TwinCAT and OSCAT count them, or seconds, as matiec, under `--profile openplc`;
+/// IEC 61131-3 leaves it open); milliseconds for TOD, seconds for DT and DATE (since 1970-01-01),
+/// as CODESYS, TwinCAT and OSCAT count them (`DT_TO_UDINT`, `TOD_TO_DWORD(t) / 3600000` for the
+/// hour); nanoseconds for edition 3's LDATE, LTOD and LDT (IEC 61131-3 edition 3, Table 10: their
+/// value is in nanoseconds); as a C integer and as a C double.
 fn number_unit(e: Elementary) -> (&'static str, &'static str) {
     match e {
         E::Dt | E::Date => ("INT64_C(1000000000)", "1e9"),
         E::Ldate | E::Ltod | E::Ldt => ("INT64_C(1)", "1.0"),
+        E::Time | E::Ltime => ("LADDERC_TIME_UNIT_NS", "((double)LADDERC_TIME_UNIT_NS)"),
         _ => ("INT64_C(1000000)", "1e6"),
     }
 }

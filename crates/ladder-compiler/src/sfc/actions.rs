@@ -5,7 +5,9 @@
 //! block instances it declares, and declared variables. Output: the actions in first-association order, each with the steps that
 //! drive each qualifier and its durations; then the IL that computes every action's `Q` (active) and
 //! `A` (execute: `Q`, plus one final scan after the non-P part of `Q` falls, plus the P1/P0 pulses)
-//! from the step flags.
+//! from the step flags. Under Beremiz's action control ([`ActionControl::Beremiz`], the target
+//! profile's `sfc_action_control`, set once per project by [`set_action_control`]) `A` has no final
+//! scan and an initial step's P and P1 pulses wait for its next activation, as matiec does.
 //! Invariants: one action control per action, whatever the number of associations (their qualifier
 //! inputs are OR-combined, as IEC requires); timed qualifiers have a duration (else E3123); a name
 //! that is neither a named action nor a declared BOOL variable is E3122.
@@ -19,6 +21,31 @@ use crate::xml::Element;
 use diagnostics::code;
 use il_frontend::ast::{IlStmt, LiteralKind, Op, Operand, Pou, TypeRef};
 use il_frontend::Span;
+
+/// Which tool's action control the charts follow (the target profile's `sfc_action_control`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ActionControl {
+    /// IEC 61131-3 ed. 2 2.6.4.5 (ed. 3 6.7.4.6), the ACTION_CONTROL block: a body runs once more
+    /// in the scan its `Q` falls (the final scan); an initial step becomes active in the first
+    /// scan, so its P (P1) action runs then.
+    #[default]
+    Iec,
+    /// Beremiz and OpenPLC (matiec's generated chart code, `generate_c_sfc.cc`): a body runs only
+    /// while its action is active, and a step's `prev_state` starts equal to its `X`, so an
+    /// initial step's P (P1) action runs only on a later activation.
+    Beremiz,
+}
+
+thread_local! {
+    /// The action control of the charts lowered now ([`set_action_control`]).
+    static ACTION_CONTROL: std::cell::Cell<ActionControl> = const { std::cell::Cell::new(ActionControl::Iec) };
+}
+
+/// Sets the action control the charts of the project being read follow (the target profile's);
+/// returns the one set before, to put back when the project is read.
+pub fn set_action_control(c: ActionControl) -> ActionControl {
+    ACTION_CONTROL.with(|a| a.replace(c))
+}
 
 /// An action qualifier (IEC 61131-3 2nd ed. 2.6.4.4, table 45): how an association's step drives the action.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
@@ -567,13 +594,35 @@ pub fn control(
         out.push(il::call(&t, vec![("IN", d), ("PT", pt)], span));
         terms.push(vec![(Op::Ld, false, f(&t, "Q"))]);
     }
+    let control = ACTION_CONTROL.with(std::cell::Cell::get);
+    // The rising edge of a pulse qualifier's step flags: Beremiz takes an initial step as active
+    // before the first scan (no pulse then); IEC's R_TRIG starts FALSE (a pulse in the first scan).
+    let rising = |q: Qualifier, x: Operand, hidden: &mut Hidden, out: &mut Vec<IlStmt>| {
+        let initial = act
+            .uses
+            .iter()
+            .any(|u| u.0 == q && steps.get(u.1).is_some_and(|s| s.initial));
+        if control == ActionControl::Beremiz && initial {
+            let (m, e) = (part(&format!("{}m", q.tag())), part(q.tag()));
+            hidden.declare(&m, "BOOL", Some(il::lit_bool(true, span)), span);
+            hidden.declare(&e, "BOOL", None, span);
+            out.push(il::op(Op::Ld, x.clone()));
+            out.push(il::opn(Op::And, v(&m)));
+            out.push(il::op(Op::St, v(&e)));
+            out.push(il::op(Op::Ld, x));
+            out.push(il::op(Op::St, v(&m)));
+            v(&e)
+        } else {
+            let t = part(q.tag());
+            hidden.declare(&t, "R_TRIG", None, span);
+            out.push(il::call(&t, vec![("CLK", x)], span));
+            f(&t, "Q")
+        }
+    };
     // P is part of Q but gets no final scan (it runs exactly once per activation).
     let mut p_pulse: Option<Operand> = None;
     if let Some(p) = input(act, Qualifier::P, steps, hidden, out) {
-        let t = part("P");
-        hidden.declare(&t, "R_TRIG", None, span);
-        out.push(il::call(&t, vec![("CLK", p)], span));
-        p_pulse = Some(f(&t, "Q"));
+        p_pulse = Some(rising(Qualifier::P, p, hidden, out));
     }
     if let Some(sd) = input(act, Qualifier::SD, steps, hidden, out) {
         let (ff, t) = (part("SDff"), part("SDt"));
@@ -616,10 +665,7 @@ pub fn control(
         pulses.push(x);
     }
     if let Some(p1) = input(act, Qualifier::P1, steps, hidden, out) {
-        let t = part("P1");
-        hidden.declare(&t, "R_TRIG", None, span);
-        out.push(il::call(&t, vec![("CLK", p1)], span));
-        pulses.push(f(&t, "Q"));
+        pulses.push(rising(Qualifier::P1, p1, hidden, out));
     }
     if let Some(p0) = input(act, Qualifier::P0, steps, hidden, out) {
         // Falling edge with our own memory (F_TRIG's first call on FALSE would pulse).
@@ -680,6 +726,16 @@ pub fn control(
                 out.push(il::op(Op::Or, p));
             }
             out.push(il::op(Op::St, var.clone()));
+        }
+        Target::Body(_) | Target::Call(_) if control == ActionControl::Beremiz => {
+            // A := Q OR pulses: no final scan (Beremiz, matiec)
+            let a = names::a(k);
+            hidden.declare(&a, "BOOL", None, span);
+            out.push(il::op(Op::Ld, v(&q)));
+            for p in pulses {
+                out.push(il::op(Op::Or, p));
+            }
+            out.push(il::op(Op::St, v(&a)));
         }
         Target::Body(_) | Target::Call(_) => {
             // A := Q OR final scan (the non-P part of Q was TRUE last scan) OR pulses.

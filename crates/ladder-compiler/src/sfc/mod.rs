@@ -81,6 +81,12 @@ pub mod names {
     pub fn action_part(action: &str, part: &str) -> String {
         format!("__sfc_{part}_{action}")
     }
+    /// Whether `name` is the memory of an action's final scan (`__sfc_Qm_<action>`, also in the
+    /// chart of a POU's action, [`in_action`]): the chart has an action IEC's final scan runs again.
+    pub fn is_final_scan_memory(name: &str) -> bool {
+        name.strip_prefix("__sfc_")
+            .is_some_and(|rest| rest.starts_with("Qm_") || rest.contains("__Qm_"))
+    }
     /// The name a hidden variable `hidden` of the chart of action `action` (a POU's action whose
     /// body is SFC) takes in the POU: `__sfc_X_Fill` of action `Sequence` is
     /// `__sfc_Sequence__X_Fill`. An identifier never holds two underscores in a row, so the name
