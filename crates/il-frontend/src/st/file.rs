@@ -1894,6 +1894,11 @@ fn parse_text_as_read(
                     && stray[n - 1] + 1 == k
                     && matches!(toks[k - 1].tok, Tok::RBracket | Tok::RParen))
         });
+    // the declarations of such a body, its header missing (a CODESYS function block copied out
+    // of its editor): blanked with the statements, so the file's one cause is one E0307
+    let headless = stray_st
+        .then(|| super::headless_body::find(src, &toks, &pous, &stray))
+        .flatten();
     // a POU keyword that is a word of stray text (`... of this function` before `FUNCTION Twice`):
     // blanked, so the IL parser reports the stray text once and the POU after it stays whole
     let stray_keywords: Vec<Range<usize>> = stray
@@ -2059,11 +2064,14 @@ fn parse_text_as_read(
                 "not compiled (the statements outside POUs span {lines} line{})",
                 if lines == 1 { "" } else { "s" }
             ))
-            .with_hint(format!(
-                "wrap them in `PROGRAM {implicit_name}` ... `END_PROGRAM` with their declarations in a VAR block (a CODESYS body exported alone lacks both)"
-            )),
+            .with_hint(match &headless {
+                Some(body) => body.hint(implicit_name),
+                None => format!(
+                    "wrap them in `PROGRAM {implicit_name}` ... `END_PROGRAM` with their declarations in a VAR block (a CODESYS body exported alone lacks both)"
+                ),
+            }),
         );
-        for r in &stray {
+        for r in stray.iter().chain(headless.iter().flat_map(|b| &b.blocks)) {
             blank(&mut text, r.clone());
         }
     }

@@ -72,6 +72,24 @@ fn interface_result(at: Span, m: &str) -> String {
     format!("__IR_{}_{}", at.start, m.to_ascii_uppercase())
 }
 
+/// The type of the result of method `m` (a property's Get accessor included) called through a
+/// value of type `t`, when `t` is an interface and the result is an interface too: such a
+/// result is no field of the interface's hidden structure but a variable of the caller
+/// ([`interface_result`]), so `env.member` does not know it (`ifut.executor.keepJob` with
+/// `PROPERTY executor : I_Job` of interface `I_Future`).
+pub(super) fn interface_result_type(env: &Env<'_>, t: &TypeRef, m: &str) -> Option<TypeRef> {
+    let TypeRef::Named(n) = env.resolve(t) else {
+        return None;
+    };
+    env.decls
+        .interfaces
+        .get(&n.key())?
+        .interface_results
+        .iter()
+        .find(|(k, _)| k.eq_ignore_ascii_case(m))
+        .map(|(_, ty)| ty.clone())
+}
+
 /// An interface as variables of its type see it.
 #[derive(Debug, Clone)]
 pub struct Interface {
@@ -703,6 +721,12 @@ impl Rewriter<'_, '_> {
                 return all;
             }
             StmtKind::Assign { target, value } => {
+                // `itf.__M___GET_EXECUTOR.keepJob := v;` after the getter's call: a component
+                // of the instance the result refers to (lowered again: the property's setter)
+                if let Some(r) = self.interface_result_read(target) {
+                    *target = r;
+                    self.changed = true;
+                }
                 if let Some(i) = self.place_interface(target).cloned() {
                     if let Some(out) = self.assign_interface(target, &i, value, span) {
                         self.changed = true;
@@ -1303,15 +1327,20 @@ impl Rewriter<'_, '_> {
     }
 
     /// The variable holding the result, of an interface type, of the call through an interface
-    /// that `p` reads (`itf.__M_NEXT` after `itf.Next()`), if `p` reads one.
+    /// that `p` reads (`itf.__M_NEXT` after `itf.Next()`), if `p` reads one; with what follows
+    /// that result in `p` (`itf.__M___GET_EXECUTOR.keepJob`, a property of the interface a
+    /// property returns, after its getter's call: the instance that result refers to).
     fn interface_result_read(&self, p: &Place) -> Option<Place> {
-        let (Accessor::Field(f), prefix) = p.accessors.split_last()? else {
-            return None;
-        };
-        let m = f.name.strip_prefix(crate::actions::METHOD_PREFIX)?;
+        let (at, m) = p.accessors.iter().enumerate().find_map(|(k, a)| match a {
+            Accessor::Field(f) => f
+                .name
+                .strip_prefix(crate::actions::METHOD_PREFIX)
+                .map(|m| (k, m)),
+            _ => None,
+        })?;
         let itf = Place {
             base: p.base.clone(),
-            accessors: prefix.to_vec(),
+            accessors: p.accessors[..at].to_vec(),
             span: p.span,
         };
         let i = self.place_interface(&itf)?;
@@ -1320,7 +1349,7 @@ impl Rewriter<'_, '_> {
             .any(|(k, _)| k.eq_ignore_ascii_case(m))
             .then(|| Place {
                 base: PlaceBase::Name(Ident::new(interface_result(p.span, m), p.span)),
-                accessors: Vec::new(),
+                accessors: p.accessors[at + 1..].to_vec(),
                 span: p.span,
             })
     }

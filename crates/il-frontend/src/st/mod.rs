@@ -27,6 +27,7 @@ pub mod generic_blocks;
 mod generic_constants;
 mod generic_headers;
 mod hash_directives;
+mod headless_body;
 pub mod implicit_enums;
 pub mod infer;
 pub mod inherit;

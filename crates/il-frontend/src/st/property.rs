@@ -455,9 +455,15 @@ impl Rewriter<'_, '_> {
                     accessors: p.accessors[..k].to_vec(),
                     span: p.span,
                 };
-                self.env
-                    .place_type(&prefix)
-                    .and_then(|t| self.env.member(&t, &result))
+                self.env.place_type(&prefix).and_then(|t| {
+                    self.env.member(&t, &result).or_else(|| {
+                        super::interface_vars::interface_result_type(
+                            self.env,
+                            &t,
+                            &getter(&name.name),
+                        )
+                    })
+                })
             }
         };
         ty.is_some_and(|t| match self.env.resolve(&t) {

@@ -351,7 +351,15 @@ impl PouLowering<'_> {
             crate::actions::method_result(&super::super::property::getter(&prop.name)),
             prop.span,
         );
-        let Some(ty) = env.member(&holder_type, &result) else {
+        // (an interface's property returning an interface: no field of the interface's hidden
+        // structure, its type is the accessor's: `ifut.executor.Run()`)
+        let Some(ty) = env.member(&holder_type, &result).or_else(|| {
+            super::super::interface_vars::interface_result_type(
+                &env,
+                &holder_type,
+                &super::super::property::getter(&prop.name),
+            )
+        }) else {
             return;
         };
         if at + 3 == n && !matches!(env.resolve(&ty), TypeRef::Ref { .. }) {
