@@ -17,7 +17,7 @@
 
 mod common;
 
-use common::{check_text, in_dir, write_in};
+use common::{check_text, in_dir, text_column, write_in};
 
 /// `ladderc run FILE --cycles N --trace - --watch WATCH` (and `extra`) in a temporary folder: the
 /// trace; asserts exit 0.
@@ -43,22 +43,9 @@ fn run(name: &str, src: &str, cycles: u32, watch: &str, extra: &[&str]) -> Strin
     trace
 }
 
-/// The column `name` of a trace, as text (TIME values are `T#...`).
-fn col(trace: &str, name: &str) -> Vec<String> {
-    let mut lines = trace.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header
-        .iter()
-        .position(|h| *h == name)
-        .unwrap_or_else(|| panic!("no column {name} in {trace}"));
-    lines
-        .map(|l| l.split(',').nth(k).unwrap().to_string())
-        .collect()
-}
-
 /// The first cycle in which column `name` is `1`.
 fn first_true(trace: &str, name: &str) -> Option<usize> {
-    col(trace, name).iter().position(|v| v == "1")
+    text_column(trace, name).iter().position(|v| v == "1")
 }
 
 const TIME_NUMBERS: &str = "PROGRAM main
@@ -100,12 +87,12 @@ const TIME_WATCH: &str = "inst.pt,inst.done,inst.elapsed,inst.whole,inst.from_in
 #[test]
 fn the_default_profile_counts_milliseconds() {
     let trace = run("units.st", TIME_NUMBERS, 3, TIME_WATCH, &[]);
-    assert_eq!(col(&trace, "inst.pt")[0], "T#1500us", "{trace}");
+    assert_eq!(text_column(&trace, "inst.pt")[0], "T#1500us", "{trace}");
     assert_eq!(first_true(&trace, "inst.done"), Some(1), "{trace}");
-    assert_eq!(col(&trace, "inst.elapsed")[1], "1.5", "{trace}");
-    assert_eq!(col(&trace, "inst.whole")[0], "2500", "{trace}");
-    assert_eq!(col(&trace, "inst.from_int")[0], "T#2ms", "{trace}");
-    assert_eq!(col(&trace, "inst.kept")[0], "T#3ms", "{trace}");
+    assert_eq!(text_column(&trace, "inst.elapsed")[1], "1.5", "{trace}");
+    assert_eq!(text_column(&trace, "inst.whole")[0], "2500", "{trace}");
+    assert_eq!(text_column(&trace, "inst.from_int")[0], "T#2ms", "{trace}");
+    assert_eq!(text_column(&trace, "inst.kept")[0], "T#3ms", "{trace}");
 }
 
 /// Under `--profile openplc` a number converted to or from TIME counts seconds, as matiec
@@ -123,13 +110,17 @@ fn the_openplc_profile_counts_seconds_as_matiec() {
         TIME_WATCH,
         &["--profile", "openplc"],
     );
-    assert_eq!(col(&trace, "inst.pt")[0], "T#1500ms", "{trace}");
+    assert_eq!(text_column(&trace, "inst.pt")[0], "T#1500ms", "{trace}");
     assert_eq!(first_true(&trace, "inst.done"), Some(75), "{trace}");
-    assert_eq!(col(&trace, "inst.elapsed")[1], "0.02", "{trace}");
-    assert_eq!(col(&trace, "inst.elapsed")[75], "1.5", "{trace}");
-    assert_eq!(col(&trace, "inst.whole")[0], "2", "{trace}");
-    assert_eq!(col(&trace, "inst.from_int")[0], "T#2000ms", "{trace}");
-    assert_eq!(col(&trace, "inst.kept")[0], "T#3000ms", "{trace}");
+    assert_eq!(text_column(&trace, "inst.elapsed")[1], "0.02", "{trace}");
+    assert_eq!(text_column(&trace, "inst.elapsed")[75], "1.5", "{trace}");
+    assert_eq!(text_column(&trace, "inst.whole")[0], "2", "{trace}");
+    assert_eq!(
+        text_column(&trace, "inst.from_int")[0],
+        "T#2000ms",
+        "{trace}"
+    );
+    assert_eq!(text_column(&trace, "inst.kept")[0], "T#3000ms", "{trace}");
 }
 
 /// The preamble Beremiz and OpenPLC Editor write at the top of every generated `plc.st` (our own
@@ -305,10 +296,12 @@ fn the_default_profile_runs_the_final_scan() {
     let trace = run("relay.st", RELAY, 16, RELAY_WATCH, &[]);
     assert_eq!(first_true(&trace, "inst.relay.lampA"), Some(2), "{trace}");
     assert_eq!(first_true(&trace, "inst.relay.lampB"), Some(5), "{trace}");
-    assert_eq!(col(&trace, "inst.relay.lampB")[6], "0", "{trace}");
+    assert_eq!(text_column(&trace, "inst.relay.lampB")[6], "0", "{trace}");
     assert_eq!(first_true(&trace, "inst.relay.lampC"), None, "{trace}");
     assert!(
-        col(&trace, "inst.relay.starts").iter().all(|v| v == "1"),
+        text_column(&trace, "inst.relay.starts")
+            .iter()
+            .all(|v| v == "1"),
         "{trace}"
     );
 }
@@ -330,13 +323,13 @@ fn the_openplc_profile_controls_actions_as_beremiz() {
     assert_eq!(first_true(&trace, "inst.relay.lampA"), Some(2), "{trace}");
     assert_eq!(first_true(&trace, "inst.relay.lampB"), Some(5), "{trace}");
     assert!(
-        col(&trace, "inst.relay.lampB")[5..]
+        text_column(&trace, "inst.relay.lampB")[5..]
             .iter()
             .all(|v| v == "1"),
         "{trace}"
     );
     assert_eq!(first_true(&trace, "inst.relay.lampC"), Some(8), "{trace}");
-    let starts = col(&trace, "inst.relay.starts");
+    let starts = text_column(&trace, "inst.relay.starts");
     assert!(starts[..9].iter().all(|v| v == "0"), "{trace}");
     assert_eq!(starts[9], "1", "{trace}");
 }

@@ -11,7 +11,7 @@
 
 mod common;
 
-use common::{assert_ok, ladderc};
+use common::{assert_ok, ladderc, text_column};
 use std::fmt::Write as _;
 use std::path::Path;
 
@@ -155,19 +155,6 @@ fn c_text(dir: &Path, part: &str) -> String {
     std::fs::read_to_string(out_dir.join("program.c")).unwrap()
 }
 
-/// The column `name` of a trace, one value per cycle.
-fn column(trace: &str, name: &str) -> Vec<String> {
-    let mut lines = trace.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let i = header
-        .iter()
-        .position(|h| *h == name)
-        .unwrap_or_else(|| panic!("no column {name} in {header:?}"));
-    lines
-        .map(|l| l.split(',').nth(i).unwrap().to_string())
-        .collect()
-}
-
 #[test]
 fn a_split_body_runs_cycle_by_cycle_as_the_same_body_in_one_function() {
     let dir = tempfile::tempdir().unwrap();
@@ -206,16 +193,16 @@ fn a_split_body_runs_cycle_by_cycle_as_the_same_body_in_one_function() {
     }
 
     // and the values are the expected ones, not only equal
-    let in0 = column(&reference, "main.in0");
-    let in2 = column(&reference, "main.in2");
-    let in4 = column(&reference, "main.in4");
-    let res = column(&reference, "main.res");
-    let out = column(&reference, "main.out");
-    let loops = column(&reference, "main.loops");
-    let total = column(&reference, "main.total");
-    let fb_n = column(&reference, "main.fb_n");
-    let fb_e = column(&reference, "main.fb_e");
-    let fb_s = column(&reference, "main.fb_s");
+    let in0 = text_column(&reference, "main.in0");
+    let in2 = text_column(&reference, "main.in2");
+    let in4 = text_column(&reference, "main.in4");
+    let res = text_column(&reference, "main.res");
+    let out = text_column(&reference, "main.out");
+    let loops = text_column(&reference, "main.loops");
+    let total = text_column(&reference, "main.total");
+    let fb_n = text_column(&reference, "main.fb_n");
+    let fb_e = text_column(&reference, "main.fb_e");
+    let fb_s = text_column(&reference, "main.fb_s");
     let (mut ends, mut rises, mut last_in4) = (0, 0, false);
     for k in 0..cycles {
         // Big: three rounds of 400 additions of 2; with b FALSE the result is negated and o untouched

@@ -4,18 +4,12 @@
 
 mod common;
 
-use common::{assert_ok, ladderc};
+use common::{assert_ok, ladderc, write_file};
 use std::path::{Path, PathBuf};
 use std::process::{Output, Stdio};
 
 fn root() -> PathBuf {
     common::repo_root()
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
 }
 
 const COUNTER: &str =
@@ -28,11 +22,11 @@ fn stderr(o: &Output) -> String {
 #[test]
 fn every_io_error_exits_2() {
     let dir = tempfile::tempdir().unwrap();
-    let prog = write(dir.path(), "prog.il", COUNTER);
+    let prog = write_file(dir.path(), "prog.il", COUNTER);
     let prog = prog.to_str().unwrap();
     let missing = dir.path().join("missing");
     let missing = missing.to_str().unwrap();
-    let file_as_dir = write(dir.path(), "plain", "x");
+    let file_as_dir = write_file(dir.path(), "plain", "x");
     let under_file = format!("{}/out.csv", file_as_dir.display());
     let motion = root().join("examples/motion/move.il");
     let motion = motion.to_str().unwrap();
@@ -139,7 +133,7 @@ fn a_pipe_into_head_prints_no_panic() {
 fn check_takes_the_axes_file_and_says_where_it_looked_for_one() {
     let dir = tempfile::tempdir().unwrap();
     let motion = root().join("examples/motion");
-    let prog = write(
+    let prog = write_file(
         dir.path(),
         "prog.il",
         &std::fs::read_to_string(motion.join("move.il")).unwrap(),
@@ -176,7 +170,7 @@ fn check_rejects_what_build_rejects() {
     let dir = tempfile::tempdir().unwrap();
     // A DINT at a hierarchical word address: it parses and checks, but the C backend refuses it
     // (E2002: the address's slot holds 2 bytes).
-    let prog = write(
+    let prog = write_file(
         dir.path(),
         "prog.il",
         "PROGRAM main\nVAR q AT %QW0.0.0.0 : DINT; END_VAR\n    LD 1\n    ST q\nEND_PROGRAM\n",
@@ -206,8 +200,8 @@ fn check_rejects_what_build_rejects() {
     .unwrap();
     let mut small = profile.clone();
     small["output_bytes"] = 1.into();
-    let small = write(dir.path(), "small.json", &small.to_string());
-    let prog2 = write(
+    let small = write_file(dir.path(), "small.json", &small.to_string());
+    let prog2 = write_file(
         dir.path(),
         "wide.il",
         "PROGRAM main\nVAR q AT %QW4 : INT; END_VAR\n    LD 1\n    ST q\nEND_PROGRAM\n",

@@ -5,19 +5,13 @@
 
 mod common;
 
-use common::{assert_ok, ladderc};
+use common::{assert_ok, ladderc, write_file};
 use serde_json::Value;
 use std::path::{Path, PathBuf};
 use std::process::Output;
 
 fn root() -> PathBuf {
     common::repo_root()
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
 }
 
 fn stderr(o: &Output) -> String {
@@ -98,7 +92,7 @@ t(IN := TRUE, NOPE := T#1s);</xhtml:p></ST></body>
 #[test]
 fn semantic_errors_in_xml_name_their_pou_network_and_local_id() {
     let dir = tempfile::tempdir().unwrap();
-    write(dir.path(), "ghost.xml", LD_GHOST);
+    write_file(dir.path(), "ghost.xml", LD_GHOST);
     let out = json(&["check", "ghost.xml"], dir.path());
     assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
     let lines = json_lines(&out);
@@ -148,18 +142,18 @@ fn semantic_errors_in_xml_name_their_pou_network_and_local_id() {
 #[test]
 fn real_failing_runs_validate_against_the_schema() {
     let dir = tempfile::tempdir().unwrap();
-    write(
+    write_file(
         dir.path(),
         "bad.il",
         "PROGRAM main\nVAR x : INT; END_VAR\n    LD y\n    ST x\n    JMP nowhere\nEND_PROGRAM\n",
     );
-    write(
+    write_file(
         dir.path(),
         "bad.st",
         "PROGRAM main\nVAR x : INT; END_VAR\n  x := ;\n  y := 1;\nEND_PROGRAM\n",
     );
-    write(dir.path(), "ghost.xml", LD_GHOST);
-    write(
+    write_file(dir.path(), "ghost.xml", LD_GHOST);
+    write_file(
         dir.path(),
         "broken.xml",
         "<project><types><pous><pou name=\"a\"",
@@ -185,12 +179,12 @@ fn real_failing_runs_validate_against_the_schema() {
 #[test]
 fn the_running_programs_messages_are_json_records_too() {
     let dir = tempfile::tempdir().unwrap();
-    write(
+    write_file(
         dir.path(),
         "div.il",
         "PROGRAM main\nVAR d : INT; q : INT; END_VAR\n    LD 10\n    DIV d\n    ST q\nEND_PROGRAM\n",
     );
-    write(
+    write_file(
         dir.path(),
         "bad.csv",
         "cycle,variable,value\n1,main.nosuch,3\n",
@@ -301,7 +295,7 @@ const SLOW: &str = "PROGRAM main\nVAR i : DINT; acc : DINT; END_VAR\n    LD 0\n 
 #[test]
 fn a_progress_bar_is_drawn_on_a_terminal_only() {
     let dir = tempfile::tempdir().unwrap();
-    let prog = write(dir.path(), "slow.il", SLOW);
+    let prog = write_file(dir.path(), "slow.il", SLOW);
     let trace = dir.path().join("t.csv");
     let args = format!(
         "{} run {} --cycles 200000 --watch main.acc --trace {}",

@@ -1,7 +1,7 @@
 //! `ladderc check/build/run` end to end: IL in, C built by the system compiler, scan cycles traced.
 
 mod common;
-use common::ladderc;
+use common::{ladderc, write_file};
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -10,17 +10,11 @@ fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
 /// Runs a program and returns the trace text.
 fn run(program: &str, stimulus: &str, extra: &[&str]) -> String {
     let dir = tempfile::tempdir().unwrap();
-    let src = write(dir.path(), "prog.il", program);
-    let stim = write(dir.path(), "stim.csv", stimulus);
+    let src = write_file(dir.path(), "prog.il", program);
+    let stim = write_file(dir.path(), "stim.csv", stimulus);
     let trace = dir.path().join("trace.csv");
     let out = ladderc()
         .arg("run")
@@ -103,7 +97,7 @@ fn ton_output_rises_exactly_when_pt_has_elapsed() {
 #[test]
 fn check_reports_errors_with_exit_1_and_json_positions() {
     let dir = tempfile::tempdir().unwrap();
-    let src = write(
+    let src = write_file(
         dir.path(),
         "bad.il",
         "PROGRAM main\nVAR x : INT; END_VAR\n    LD x\n    JMPC nowhere\nEND_PROGRAM\n",
@@ -124,7 +118,7 @@ fn check_reports_errors_with_exit_1_and_json_positions() {
 fn a_failed_build_leaves_no_output_and_a_good_one_replaces_it_whole() {
     let dir = tempfile::tempdir().unwrap();
     let out_dir = dir.path().join("out");
-    let bad = write(
+    let bad = write_file(
         dir.path(),
         "bad.il",
         "PROGRAM main\n    LD undeclared\nEND_PROGRAM\n",
@@ -138,7 +132,7 @@ fn a_failed_build_leaves_no_output_and_a_good_one_replaces_it_whole() {
         .unwrap();
     assert_eq!(st.code(), Some(1));
     assert!(!out_dir.exists());
-    let good = write(
+    let good = write_file(
         dir.path(),
         "good.il",
         "PROGRAM main\nVAR x : INT; END_VAR\n    LD x\n    ADD 1\n    ST x\nEND_PROGRAM\n",

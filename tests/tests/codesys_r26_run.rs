@@ -16,21 +16,7 @@
 //!   the program already did).
 
 mod common;
-use common::{check_text, column, run_text, run_traced_files};
-
-/// The values of column `name` of a trace, as text (TIME, TOD and DT values are written as
-/// literals).
-fn texts(trace: &str, name: &str) -> Vec<String> {
-    let mut lines = trace.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header
-        .iter()
-        .position(|h| *h == name)
-        .unwrap_or_else(|| panic!("no column {name}: {trace}"));
-    lines
-        .map(|l| l.split(',').nth(k).unwrap().to_string())
-        .collect()
-}
+use common::{check_text, column, run_text, run_traced_files, text_column};
 
 /// `TOD#12:00` in a statement, `TIME_OF_DAY#9:0` and `DT#1970-1-1-00:00` in declarations (ST):
 /// each is read with zero seconds and warned about once, at the literal (W1445).
@@ -58,8 +44,8 @@ END_PROGRAM
     );
     assert_eq!(column(&trace, "PLC_PRG.pm"), vec![1.0], "{trace}");
     assert_eq!(column(&trace, "PLC_PRG.late"), vec![1.0], "{trace}");
-    assert_eq!(texts(&trace, "PLC_PRG.tStart"), vec!["TOD#09:00:00"]);
-    assert_eq!(texts(&trace, "PLC_PRG.noon"), vec!["TOD#12:00:00"]);
+    assert_eq!(text_column(&trace, "PLC_PRG.tStart"), vec!["TOD#09:00:00"]);
+    assert_eq!(text_column(&trace, "PLC_PRG.noon"), vec!["TOD#12:00:00"]);
     let warnings: Vec<&str> = stderr.lines().filter(|l| l.contains("W1445")).collect();
     assert_eq!(warnings.len(), 4, "{stderr}");
     assert!(
@@ -82,7 +68,11 @@ END_VAR
 END_PROGRAM
 ";
     let (trace, stderr) = run_text("tod.il", il, 1, "Main.t");
-    assert_eq!(texts(&trace, "Main.t"), vec!["TOD#12:00:00"], "{stderr}");
+    assert_eq!(
+        text_column(&trace, "Main.t"),
+        vec!["TOD#12:00:00"],
+        "{stderr}"
+    );
     assert!(
         stderr.contains("tod.il:5:6: warning[W1445]: `TOD#12:00` has no seconds"),
         "{stderr}"
@@ -106,9 +96,13 @@ END_PROGRAM
 </project>
 "#;
     let (trace, stderr) = run_text("tod.xml", xml, 1, "Main.dst,Main.d,Main.early");
-    assert_eq!(texts(&trace, "Main.dst"), vec!["TOD#03:00:00"], "{stderr}");
     assert_eq!(
-        texts(&trace, "Main.d"),
+        text_column(&trace, "Main.dst"),
+        vec!["TOD#03:00:00"],
+        "{stderr}"
+    );
+    assert_eq!(
+        text_column(&trace, "Main.d"),
         vec!["DT#1970-01-01-00:00:00"],
         "{stderr}"
     );
@@ -266,10 +260,13 @@ END_PROGRAM
         "PLC_PRG.t,PLC_PRG.x,PLC_PRG.back,PLC_PRG.wrapped,PLC_PRG.later",
     );
     assert!(!stderr.contains("error["), "{stderr}");
-    assert_eq!(texts(&trace, "PLC_PRG.t"), vec!["T#3600000ms"]);
-    assert_eq!(texts(&trace, "PLC_PRG.x"), vec!["DT#2020-01-02-00:00:00"]);
-    assert_eq!(texts(&trace, "PLC_PRG.back"), vec!["TOD#01:30:00"]);
-    assert_eq!(texts(&trace, "PLC_PRG.wrapped"), vec!["TOD#01:00:00"]);
+    assert_eq!(text_column(&trace, "PLC_PRG.t"), vec!["T#3600000ms"]);
+    assert_eq!(
+        text_column(&trace, "PLC_PRG.x"),
+        vec!["DT#2020-01-02-00:00:00"]
+    );
+    assert_eq!(text_column(&trace, "PLC_PRG.back"), vec!["TOD#01:30:00"]);
+    assert_eq!(text_column(&trace, "PLC_PRG.wrapped"), vec!["TOD#01:00:00"]);
     assert_eq!(column(&trace, "PLC_PRG.later"), vec![1.0], "{trace}");
 }
 

@@ -14,15 +14,7 @@
 //!   once per text. Before: E0324 at each operator.
 
 mod common;
-use common::{check_text, column, rejected_heads, run_traced, run_traced_files};
-use std::path::{Path, PathBuf};
-
-/// Writes `src` to `dir/name` and returns its path.
-fn write(dir: &Path, name: &str, src: &str) -> PathBuf {
-    let f = dir.join(name);
-    std::fs::write(&f, src).unwrap();
-    f
-}
+use common::{check_text, column, rejected_heads, run_traced, run_traced_files, write_file};
 
 const COUNTER: &str = "PROGRAM Counter\nVAR_INPUT inc : INT := 1; END_VAR\n\
                        VAR_OUTPUT total : INT; big : BOOL; END_VAR\n\
@@ -38,7 +30,7 @@ const COUNTER: &str = "PROGRAM Counter\nVAR_INPUT inc : INT := 1; END_VAR\n\
 #[test]
 fn a_program_called_from_st_and_il_runs_on_its_one_instance() {
     let dir = tempfile::tempdir().unwrap();
-    let st = write(
+    let st = write_file(
         dir.path(),
         "calls.st",
         &format!(
@@ -59,7 +51,7 @@ fn a_program_called_from_st_and_il_runs_on_its_one_instance() {
         "{stderr}"
     );
     assert_eq!(stderr.matches("W1417").count(), 1, "once per POU: {stderr}");
-    let il = write(
+    let il = write_file(
         dir.path(),
         "calls.il",
         "PROGRAM MainIl\nVAR seen : INT; END_VAR\nCAL Counter(inc := 2)\nLD Counter.total\n\
@@ -79,7 +71,7 @@ fn a_program_called_from_st_and_il_runs_on_its_one_instance() {
 #[test]
 fn a_configured_program_called_by_a_block_runs_twice_and_one_in_no_task_only_when_called() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(
+    let f = write_file(
         dir.path(),
         "cfg.st",
         "PROGRAM Counter\nVAR_INPUT inc : INT := 1; END_VAR\nVAR_OUTPUT total : INT; END_VAR\n\
@@ -152,7 +144,7 @@ got := adder.acc * 2;]]></xhtml:p></ST></body></pou>
 </project>
 "#;
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "calls.xml", xml);
+    let f = write_file(dir.path(), "calls.xml", xml);
     let (trace, _) = run_traced(&f, 3, "main.got,adder.acc");
     assert_eq!(
         trace,
@@ -173,7 +165,7 @@ fn twincat_programs_call_programs_and_use_and_then() {
         )
     }
     let dir = tempfile::tempdir().unwrap();
-    let main = write(
+    let main = write_file(
         dir.path(),
         "MAIN.TcPOU",
         &pou(
@@ -183,7 +175,7 @@ fn twincat_programs_call_programs_and_use_and_then() {
              IF n > 2 OR_ELSE arr[n] > 5 THEN v := v + 1; END_IF",
         ),
     );
-    let sub = write(
+    let sub = write_file(
         dir.path(),
         "P_Sub.TcPOU",
         &pou(
@@ -221,7 +213,7 @@ fn and_then_and_or_else_evaluate_their_right_operand_only_when_needed() {
                k := 0;\nWHILE k <= 3 AND_THEN arr[k] <> 3 DO\n  k := k + 1;\nEND_WHILE;\n\
                END_PROGRAM\n";
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "guards.st", src);
+    let f = write_file(dir.path(), "guards.st", src);
     let (trace, stderr) = run_traced(
         &f,
         3,
@@ -236,7 +228,7 @@ fn and_then_and_or_else_evaluate_their_right_operand_only_when_needed() {
     assert_eq!(stderr.matches("warning[W0324]").count(), 1, "{stderr}");
     // the same with AND: the index runs past the array (the run says so) and Count runs always
     let plain = src.replace("AND_THEN", "AND").replace("OR_ELSE", "OR");
-    let f = write(dir.path(), "plain.st", &plain);
+    let f = write_file(dir.path(), "plain.st", &plain);
     let out = common::ladderc()
         .args(["run"])
         .arg(&f)
@@ -276,7 +268,7 @@ q := (cyc MOD 2 = 0) AND_THEN tick(n := calls);]]></xhtml:p></ST></body></pou>
 </project>
 "#;
     let dir = tempfile::tempdir().unwrap();
-    let f = write(dir.path(), "guards.xml", xml);
+    let f = write_file(dir.path(), "guards.xml", xml);
     let (trace, _) = run_traced(&f, 4, "main.q,main.calls");
     assert_eq!(
         trace,
@@ -316,7 +308,7 @@ fn method_calls_and_non_bool_operands_after_and_then_are_located_errors() {
 #[test]
 fn an_action_of_a_program_in_no_resource_runs_on_its_own_instance() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(
+    let f = write_file(
         dir.path(),
         "act.st",
         "PROGRAM counter\nVAR n : INT; END_VAR\nn := n + 100;\nEND_PROGRAM\n\
@@ -345,8 +337,8 @@ fn qualified_list_constants_of_a_text_gvl_object_bound_arrays_and_run_in_bodies(
     let dir = tempfile::tempdir().unwrap();
     let gvl_text = "{attribute 'qualified_only'}\nVAR_GLOBAL\nEND_VAR\nVAR_GLOBAL CONSTANT\n\
                     \tnJoints:INT:=5;\n\tMAX_SIZE:INT:=nJoints;\nEND_VAR\n";
-    let gvl = write(dir.path(), "GVL.txt", gvl_text);
-    let prg = write(
+    let gvl = write_file(dir.path(), "GVL.txt", gvl_text);
+    let prg = write_file(
         dir.path(),
         "PLC_PRG.txt",
         "PROGRAM PLC_PRG\nVAR\n\tq : ARRAY[1..GVL.nJoints] OF REAL;\n\tname : STRING(GVL.MAX_SIZE);\n\
@@ -365,8 +357,8 @@ fn qualified_list_constants_of_a_text_gvl_object_bound_arrays_and_run_in_bodies(
          0,0,5,10,1.5,\"abc\"\n1,10,5,20,1.5,\"abc\"\n"
     );
     // `.st` and IL: the same list as `GVL.st`, an IL program bounded and reading it qualified
-    let gvl_st = write(dir.path(), "GVL.st", gvl_text);
-    let il = write(
+    let gvl_st = write_file(dir.path(), "GVL.st", gvl_text);
+    let il = write_file(
         dir.path(),
         "main_il.il",
         "PROGRAM MainIl\nVAR\n  buf : ARRAY[0..GVL.nJoints] OF INT;\n  n : INT;\nEND_VAR\n\
@@ -381,12 +373,12 @@ fn qualified_list_constants_of_a_text_gvl_object_bound_arrays_and_run_in_bodies(
 #[test]
 fn a_globals_file_named_like_a_pou_stays_an_unnamed_list() {
     let dir = tempfile::tempdir().unwrap();
-    let globals = write(
+    let globals = write_file(
         dir.path(),
         "Main.st",
         "VAR_GLOBAL\n  level : INT := 7;\nEND_VAR\n",
     );
-    let prg = write(
+    let prg = write_file(
         dir.path(),
         "prog.st",
         "PROGRAM Main\nVAR_EXTERNAL level : INT; END_VAR\nVAR x : INT; END_VAR\n\
@@ -409,7 +401,7 @@ fn structured_instance_values_run_and_fb_init_arguments_are_one_e0329_each() {
     let fb = "FUNCTION_BLOCK FB_X\nVAR_INPUT a : INT := 5; END_VAR\nVAR_OUTPUT q : INT; END_VAR\n\
               VAR k : INT; END_VAR\nq := a + k;\nEND_FUNCTION_BLOCK\n";
     let dir = tempfile::tempdir().unwrap();
-    let f = write(
+    let f = write_file(
         dir.path(),
         "init.st",
         &format!(
@@ -434,7 +426,7 @@ fn structured_instance_values_run_and_fb_init_arguments_are_one_e0329_each() {
     };
     assert_eq!(rejected_heads("args.st", &src), vec![want(9), want(10)]);
     // a TwinCAT object: the same, located in the .TcPOU
-    let tc = write(
+    let tc = write_file(
         dir.path(),
         "MAIN.TcPOU",
         "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
@@ -472,7 +464,7 @@ fn subranges_with_named_and_qualified_bounds_take_the_constants_values() {
              w : DINT(-cMax..-cMin) := -5;\nEND_VAR\n{assign}\nEND_PROGRAM\n"
         )
     };
-    let f = write(dir.path(), "ranges.st", &body("r := 9;\nu := 0;\nw := -9;"));
+    let f = write_file(dir.path(), "ranges.st", &body("r := 9;\nu := 0;\nw := -9;"));
     let (trace, _) = run_traced(&f, 1, "Main.r,Main.u,Main.w");
     assert_eq!(trace, "cycle,time_ms,Main.r,Main.u,Main.w\n0,0,9,0,-9\n");
     let heads = rejected_heads("out.st", &body("r := 10;\nu := 11;\nw := -1;"));
@@ -485,26 +477,26 @@ fn subranges_with_named_and_qualified_bounds_take_the_constants_values() {
         ]
     );
     // qualified by a list: a `.st` GVL object and a TwinCAT GVL
-    let gvl = write(
+    let gvl = write_file(
         dir.path(),
         "GVL.st",
         "VAR_GLOBAL CONSTANT\n  nMax : INT := 5;\nEND_VAR\n",
     );
-    let main = write(
+    let main = write_file(
         dir.path(),
         "main.st",
         "PROGRAM Main\nVAR\n  u : UINT(0..GVL.nMax) := 3;\nEND_VAR\nu := 5;\nEND_PROGRAM\n",
     );
     let (trace, _) = run_traced_files(&[&gvl, &main], 1, "Main.u");
     assert_eq!(trace, "cycle,time_ms,Main.u\n0,0,5\n");
-    let tc_gvl = write(
+    let tc_gvl = write_file(
         dir.path(),
         "GVL_Const.TcGVL",
         "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \
          <GVL Name=\"GVL_Const\" Id=\"{9}\">\n    <Declaration><![CDATA[{attribute 'qualified_only'}\n\
          VAR_GLOBAL CONSTANT\n\tcTop : INT := 4;\nEND_VAR\n]]></Declaration>\n  </GVL>\n</TcPlcObject>\n",
     );
-    let tc_main = write(
+    let tc_main = write_file(
         dir.path(),
         "MAIN.TcPOU",
         "<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<TcPlcObject Version=\"1.1.0.1\">\n  \

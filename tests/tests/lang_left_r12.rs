@@ -25,20 +25,13 @@
 //!   configurations only; CODESYS and TwinCAT accept them): warning W1418. Before: E1031.
 
 mod common;
-use common::{check_text, run_traced, run_traced_files};
+use common::{check_text, run_traced, run_traced_files, write_file};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("tests/fixtures/lang_left_r12")
         .join(name)
-}
-
-/// Writes `src` to `dir/name` and returns its path.
-fn write(dir: &Path, name: &str, src: &str) -> PathBuf {
-    let f = dir.join(name);
-    std::fs::write(&f, src).unwrap();
-    f
 }
 
 // ------------------------------------------------------------------ 1. constant expressions
@@ -72,7 +65,7 @@ fn real_lreal_and_time_constant_expressions_run_across_global_lists() {
 #[test]
 fn a_sign_in_a_constant_expression_binds_to_its_operand() {
     let dir = tempfile::tempdir().unwrap();
-    let f = write(
+    let f = write_file(
         dir.path(),
         "neg.st",
         "PROGRAM Main\nVAR CONSTANT N : INT := 4; END_VAR\n\
@@ -117,7 +110,7 @@ fn constant_expressions_without_a_value_are_one_located_e0022_each() {
 #[test]
 fn on_with_and_task_name_variables_with_w1418() {
     let dir = tempfile::tempdir().unwrap();
-    let st = write(
+    let st = write_file(
         dir.path(),
         "on.st",
         "PROGRAM Main\nVAR ON : BOOL; WITH : INT; task : INT; END_VAR\nON := NOT ON;\n\
@@ -136,7 +129,7 @@ fn on_with_and_task_name_variables_with_w1418() {
         "{stderr}"
     );
     assert_eq!(stderr.matches("W1418").count(), 3, "{stderr}");
-    let il = write(
+    let il = write_file(
         dir.path(),
         "on.il",
         "PROGRAM Main\nVAR ON : BOOL; n : INT; END_VAR\nLD ON\nSTN ON\nJMPCN skip\nLD n\nADD 1\n\

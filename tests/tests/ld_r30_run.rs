@@ -5,58 +5,13 @@
 
 mod common;
 
-use common::{check_text, column, run_with_stimulus};
-
-/// A PLCopen TC6 project: `fbs` (whole `<pou>` elements), then program `main` with the local
-/// variables `vars` (`name:TYPE` pairs, TYPE elementary or a block type) and `body` (an `<LD>` or
-/// `<FBD>` element), run as instance `m`.
-fn project(fbs: &str, vars: &[(&str, &str)], body: &str) -> String {
-    let vars: String = vars
-        .iter()
-        .map(|(n, t)| {
-            let ty = if t.chars().all(|c| c.is_ascii_uppercase()) {
-                format!("<{t}/>")
-            } else {
-                format!("<derived name=\"{t}\"/>")
-            };
-            format!("<variable name=\"{n}\"><type>{ty}</type></variable>\n")
-        })
-        .collect();
-    format!(
-        r#"<?xml version="1.0" encoding="utf-8"?>
-<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
-<fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
-<contentHeader name="t"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
-<types><dataTypes/><pous>
-{fbs}
-<pou name="main" pouType="program">
-<interface><localVars>
-{vars}</localVars></interface>
-<body>
-{body}
-</body>
-</pou>
-</pous></types>
-<instances><configurations><configuration name="c"><resource name="r">
-<task name="t" priority="0" interval="T#10ms"><pouInstance name="m" typeName="main"/></task>
-</resource></configuration></configurations></instances>
-</project>
-"#
-    )
-}
+use common::{check_text, column, plcopen_program, run_xml_with_stimulus};
 
 /// A user block whose body sets its output: `Q := TRUE`.
 const LATCH_FB: &str = r#"<pou name="Latch" pouType="functionBlock">
 <interface><outputVars><variable name="Q"><type><BOOL/></type></variable></outputVars></interface>
 <body><ST><xhtml:p><![CDATA[Q := TRUE;]]></xhtml:p></ST></body>
 </pou>"#;
-
-fn run_file(text: &str, cycles: u32, stimulus: &str, watch: &[&str]) -> String {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("plc.xml");
-    std::fs::write(&file, text).unwrap();
-    run_with_stimulus(&file, cycles, stimulus, watch)
-}
 
 fn col(trace: &str, name: &str) -> Vec<u8> {
     column(trace, name).iter().map(|v| *v as u8).collect()
@@ -84,7 +39,7 @@ fn an_ld_box_with_en_false_leaves_its_instance_eno_false() {
 <coil localId="7" negated="false"><position x="160" y="60"/><connectionPointIn><connection refLocalId="6"/></connectionPointIn><connectionPointOut/><variable>eno_copy</variable></coil>
 <rightPowerRail localId="8"><position x="200" y="0"/><connectionPointIn><connection refLocalId="5"/><connection refLocalId="7"/></connectionPointIn></rightPowerRail>
 </LD>"#;
-    let text = project(
+    let text = plcopen_program(
         LATCH_FB,
         &[
             ("en", "BOOL"),
@@ -94,7 +49,7 @@ fn an_ld_box_with_en_false_leaves_its_instance_eno_false() {
         ],
         body,
     );
-    let trace = run_file(
+    let trace = run_xml_with_stimulus(
         &text,
         7,
         "2,m.en,TRUE\n4,m.en,FALSE\n6,m.en,TRUE\n",
@@ -119,12 +74,12 @@ fn an_fbd_box_with_en_false_leaves_its_instance_eno_false() {
 <inVariable localId="3"><position x="0" y="80"/><connectionPointOut/><expression>inst.ENO</expression></inVariable>
 <outVariable localId="4"><position x="100" y="80"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn><expression>eno_copy</expression></outVariable>
 </FBD>"#;
-    let text = project(
+    let text = plcopen_program(
         LATCH_FB,
         &[("en", "BOOL"), ("eno_copy", "BOOL"), ("inst", "Latch")],
         body,
     );
-    let trace = run_file(
+    let trace = run_xml_with_stimulus(
         &text,
         6,
         "2,m.en,TRUE\n4,m.en,FALSE\n",
@@ -160,7 +115,7 @@ fn toggle(shared: bool) -> String {
 <rightPowerRail localId="10"><position x="200" y="0"/><connectionPointIn><connection refLocalId="4"/><connection refLocalId="6"/><connection refLocalId="8"/></connectionPointIn></rightPowerRail>
 </LD>"#
     );
-    project("", &[("x", "BOOL"), ("s", "BOOL"), ("seen", "BOOL")], &body)
+    plcopen_program("", &[("x", "BOOL"), ("s", "BOOL"), ("seen", "BOOL")], &body)
 }
 
 /// B5 (CONTROLLINO-PLC/OpenPLC_examples `stairs_light_control`). IEC 61131-3 evaluates a network's
@@ -176,7 +131,7 @@ fn toggle(shared: bool) -> String {
 fn a_contact_below_a_coil_of_its_network_reads_what_the_coil_wrote() {
     let mut traces = Vec::new();
     for shared in [true, false] {
-        let trace = run_file(
+        let trace = run_xml_with_stimulus(
             &toggle(shared),
             5,
             "2,m.x,TRUE\n3,m.x,FALSE\n",
@@ -213,7 +168,7 @@ fn a_seal_in_contact_reads_the_value_from_before_its_coil() {
 <coil localId="7" negated="false"><position x="160" y="70"/><connectionPointIn><connection refLocalId="6"/></connectionPointIn><connectionPointOut/><variable>both</variable></coil>
 <rightPowerRail localId="8"><position x="200" y="0"/><connectionPointIn><connection refLocalId="5"/><connection refLocalId="7"/></connectionPointIn></rightPowerRail>
 </LD>"#;
-    let text = project(
+    let text = plcopen_program(
         "",
         &[
             ("start", "BOOL"),
@@ -223,7 +178,7 @@ fn a_seal_in_contact_reads_the_value_from_before_its_coil() {
         ],
         body,
     );
-    let trace = run_file(
+    let trace = run_xml_with_stimulus(
         &text,
         6,
         "1,m.start,TRUE\n2,m.start,FALSE\n4,m.stop,TRUE\n5,m.stop,FALSE\n",
@@ -245,7 +200,7 @@ fn a_contact_on_an_int_variable_is_one_error_not_two() {
 <coil localId="3" negated="false"><position x="160" y="10"/><connectionPointIn><connection refLocalId="2"/></connectionPointIn><connectionPointOut/><variable>out</variable></coil>
 <rightPowerRail localId="4"><position x="200" y="0"/><connectionPointIn><connection refLocalId="3"/></connectionPointIn></rightPowerRail>
 </LD>"#;
-    let text = project("", &[("n", "INT"), ("out", "BOOL")], body);
+    let text = plcopen_program("", &[("n", "INT"), ("out", "BOOL")], body);
     let (code, lines) = check_text("plc.xml", &text);
     assert_eq!(code, Some(1), "{lines:?}");
     let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();

@@ -5,52 +5,7 @@
 
 mod common;
 
-use common::{column, run_with_stimulus};
-
-/// A PLCopen TC6 project: `fbs` (whole `<pou>` elements), then program `main` with the local
-/// variables `vars` (`name:TYPE` pairs, TYPE elementary or a block type) and `body` (an `<LD>` or
-/// `<FBD>` element), run as instance `m`.
-fn project(fbs: &str, vars: &[(&str, &str)], body: &str) -> String {
-    let vars: String = vars
-        .iter()
-        .map(|(n, t)| {
-            let ty = if t.chars().all(|c| c.is_ascii_uppercase()) {
-                format!("<{t}/>")
-            } else {
-                format!("<derived name=\"{t}\"/>")
-            };
-            format!("<variable name=\"{n}\"><type>{ty}</type></variable>\n")
-        })
-        .collect();
-    format!(
-        r#"<?xml version="1.0" encoding="utf-8"?>
-<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
-<fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
-<contentHeader name="t"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
-<types><dataTypes/><pous>
-{fbs}
-<pou name="main" pouType="program">
-<interface><localVars>
-{vars}</localVars></interface>
-<body>
-{body}
-</body>
-</pou>
-</pous></types>
-<instances><configurations><configuration name="c"><resource name="r">
-<task name="t" priority="0" interval="T#10ms"><pouInstance name="m" typeName="main"/></task>
-</resource></configuration></configurations></instances>
-</project>
-"#
-    )
-}
-
-fn run_file(text: &str, cycles: u32, stimulus: &str, watch: &[&str]) -> String {
-    let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("plc.xml");
-    std::fs::write(&file, text).unwrap();
-    run_with_stimulus(&file, cycles, stimulus, watch)
-}
+use common::{column, plcopen_program, run_xml_with_stimulus};
 
 fn col(trace: &str, name: &str) -> Vec<u8> {
     column(trace, name).iter().map(|v| *v as u8).collect()
@@ -107,7 +62,7 @@ const ENO_STIMULUS: &str = "1,m.en,TRUE\n3,m.n,3\n5,m.n,1\n6,m.en,FALSE\n";
 /// Before: the pin was EN, so `ok` stayed TRUE at cycles 3-4.
 #[test]
 fn a_user_block_eno_pin_carries_the_eno_its_body_leaves() {
-    let text = project(
+    let text = plcopen_program(
         CHECK_FB,
         &[
             ("en", "BOOL"),
@@ -118,7 +73,7 @@ fn a_user_block_eno_pin_carries_the_eno_its_body_leaves() {
         ],
         &eno_rung("Check", true, "Q"),
     );
-    let trace = run_file(&text, 7, ENO_STIMULUS, &["m.n", "m.ok", "m.y"]);
+    let trace = run_xml_with_stimulus(&text, 7, ENO_STIMULUS, &["m.n", "m.ok", "m.y"]);
     assert_eq!(col(&trace, "m.ok"), [0, 1, 1, 0, 0, 1, 0], "{trace}");
     assert_eq!(col(&trace, "m.y"), [0, 0, 0, 3, 3, 1, 1], "{trace}");
 }
@@ -130,12 +85,12 @@ fn a_user_block_eno_pin_carries_the_eno_its_body_leaves() {
 /// was EN (`ok` TRUE at cycles 3-4) and `y` took 4.
 #[test]
 fn a_user_function_eno_pin_carries_the_eno_its_body_leaves() {
-    let text = project(
+    let text = plcopen_program(
         PLUS1_FN,
         &[("en", "BOOL"), ("n", "INT"), ("ok", "BOOL"), ("y", "INT")],
         &eno_rung("Plus1", false, "OUT"),
     );
-    let trace = run_file(&text, 7, ENO_STIMULUS, &["m.n", "m.ok", "m.y"]);
+    let trace = run_xml_with_stimulus(&text, 7, ENO_STIMULUS, &["m.n", "m.ok", "m.y"]);
     assert_eq!(col(&trace, "m.ok"), [0, 1, 1, 0, 0, 1, 0], "{trace}");
     assert_eq!(col(&trace, "m.y"), [0, 1, 1, 1, 1, 2, 2], "{trace}");
 }
@@ -175,7 +130,7 @@ fn boxes_below_a_coil() -> String {
 <outVariable localId="12"><position x="200" y="240"/><connectionPointIn><connection refLocalId="11" formalParameter="OUT"/></connectionPointIn><expression>y</expression></outVariable>
 <rightPowerRail localId="13"><position x="240" y="0"/><connectionPointIn><connection refLocalId="3"/><connection refLocalId="6"/><connection refLocalId="8"/></connectionPointIn></rightPowerRail>
 </LD>"#;
-    project(
+    plcopen_program(
         PASS_FB,
         &[
             ("x", "BOOL"),
@@ -200,7 +155,7 @@ fn boxes_below_a_coil() -> String {
 /// saw `run` one scan late (`seen` and `y` from cycle 3, `pulse` at cycle 3).
 #[test]
 fn boxes_and_edge_contacts_below_a_coil_read_what_it_wrote() {
-    let trace = run_file(
+    let trace = run_xml_with_stimulus(
         &boxes_below_a_coil(),
         7,
         "0,m.n,5\n2,m.x,TRUE\n4,m.x,FALSE\n5,m.n,7\n6,m.x,TRUE\n",
@@ -238,7 +193,7 @@ fn a_box_before_its_own_output_coil_reads_the_value_from_before_the_coil() {
 <coil localId="8" negated="false"><position x="200" y="60"/><connectionPointIn><connection refLocalId="6"/></connectionPointIn><connectionPointOut/><variable>fell</variable></coil>
 <rightPowerRail localId="9"><position x="240" y="0"/><connectionPointIn><connection refLocalId="5"/><connection refLocalId="8"/></connectionPointIn></rightPowerRail>
 </LD>"#;
-    let text = project(
+    let text = plcopen_program(
         PASS_FB,
         &[
             ("tick", "BOOL"),
@@ -248,7 +203,7 @@ fn a_box_before_its_own_output_coil_reads_the_value_from_before_the_coil() {
         ],
         body,
     );
-    let trace = run_file(
+    let trace = run_xml_with_stimulus(
         &text,
         6,
         "1,m.tick,TRUE\n5,m.tick,FALSE\n",

@@ -14,20 +14,7 @@
 //!   all but DT to DATE/TOD, DATE to DT and TOD/TIME).
 
 mod common;
-use common::{check_text, column, run_text};
-
-/// The text column `name` of a trace, one value per cycle.
-fn text_column(trace: &str, name: &str) -> Vec<String> {
-    let mut lines = trace.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header
-        .iter()
-        .position(|h| *h == name)
-        .unwrap_or_else(|| panic!("no column {name} in {trace}"));
-    lines
-        .map(|l| l.split(',').nth(k).unwrap().to_string())
-        .collect()
-}
+use common::{check_text, column, run_text, text_column};
 
 /// `fs[i](a := b)` in a FOR loop, `fs : ARRAY[0..2] OF FB` whose in-out is `ARRAY [*] OF INT`:
 /// each element sees the bounds of the array it is given (UPPER_BOUND 9 for `b`, 4 for `c`), and

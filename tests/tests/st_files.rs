@@ -5,7 +5,7 @@
 //! code that does not run, W0301 notes). Results are compared with what IEC 61131-3 gives.
 
 mod common;
-use common::ladderc;
+use common::{ladderc, write_file};
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -99,12 +99,6 @@ fn errors(o: &Output) -> Vec<(String, u64)> {
         .collect()
 }
 
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    std::fs::write(&p, text).unwrap();
-    p
-}
-
 // ------------------------------------------------------------------ the corpus of real .st files
 
 #[test]
@@ -149,7 +143,7 @@ fn corpus_programs_run_with_iec_results() {
 
     // The start/stop latch: MotorContactor := (Start OR MotorContactor) AND Stop (Stop is NC).
     let dir = tempfile::tempdir().unwrap();
-    let stim = write(
+    let stim = write_file(
         dir.path(),
         "s.csv",
         "cycle,variable,value\n0,plc_task_instance.StopButton,1\n2,plc_task_instance.StartButton,1\n\
@@ -196,7 +190,7 @@ fn corpus_programs_run_with_iec_results() {
     assert_eq!(column(&rows, "main.Buzzer"), ["1"]);
 
     // Buzzer AT %QX1 := NOT Button AT %IX1.
-    let stim = write(dir.path(), "m.csv", "1,%IX1,1\n");
+    let stim = write_file(dir.path(), "m.csv", "1,%IX1,1\n");
     let p = st_corpus("main.st");
     let rows = trace(&cmd(
         &[
@@ -326,7 +320,7 @@ const WATCH: &str = "main.n,main.lv,main.x,main.mx,main.m";
 #[test]
 fn st_file_with_functional_calls_il_body_and_subrange_literal_runs() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "mixed.st", MIXED);
+    let p = write_file(dir.path(), "mixed.st", MIXED);
     let o = cmd(
         &[
             "run",
@@ -344,7 +338,7 @@ fn st_file_with_functional_calls_il_body_and_subrange_literal_runs() {
 #[test]
 fn txt_and_no_extension_are_detected_with_a_note() {
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "mixed.txt", MIXED);
+    let p = write_file(dir.path(), "mixed.txt", MIXED);
     let o = cmd(
         &[
             "run",
@@ -364,7 +358,7 @@ fn txt_and_no_extension_are_detected_with_a_note() {
     assert_eq!(notes[0].0, "note");
     assert!(stderr(&o).contains("Structured Text"), "{}", stderr(&o));
 
-    let il = write(
+    let il = write_file(
         dir.path(),
         "prog",
         "PROGRAM p\nVAR n : INT; END_VAR\n  LD n\n  ADD 2\n  ST n\nEND_PROGRAM\n",
@@ -392,7 +386,7 @@ fn txt_and_no_extension_are_detected_with_a_note() {
 fn lang_forces_the_language_and_st_in_il_is_one_error() {
     let dir = tempfile::tempdir().unwrap();
     // An .il file holding ST: one E0300 for the file, naming every ST body, no cascade.
-    let p = write(dir.path(), "mixed.il", MIXED);
+    let p = write_file(dir.path(), "mixed.il", MIXED);
     let o = cmd(
         &["check", p.to_str().unwrap(), "--message-format", "json"],
         None,
@@ -416,7 +410,7 @@ fn lang_forces_the_language_and_st_in_il_is_one_error() {
     );
     check_mixed(&o, 3);
     // `--lang il` on an .st file: the same single diagnostic.
-    let p = write(dir.path(), "m.st", MIXED);
+    let p = write_file(dir.path(), "m.st", MIXED);
     let o = cmd(
         &[
             "check",
@@ -467,7 +461,7 @@ fn il_extensible_functions_take_several_operands() {
                LD n\nEQ 3, n\nST e\n\
                END_PROGRAM\n";
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "ext.il", src);
+    let p = write_file(dir.path(), "ext.il", src);
     let rows = trace(&cmd(&["run", p.to_str().unwrap(), "--cycles", "7"], None));
     for (k, r) in rows.iter().enumerate() {
         let n = k as i32 + 1;
@@ -477,7 +471,7 @@ fn il_extensible_functions_take_several_operands() {
         assert_eq!(r["main.e"], ((n == 3) as i32).to_string());
     }
     // A non-extensible operator with two operands is one E0301.
-    let p = write(
+    let p = write_file(
         dir.path(),
         "bad.il",
         "PROGRAM main\nVAR n : INT; END_VAR\nLD n\nSUB 1, 2\nST n\nEND_PROGRAM\n",
@@ -497,7 +491,7 @@ fn pragmas_are_never_dropped_silently() {
                IF go THEN\n  {SetFbVar(OUT, 1)}\n  n := n + 1;\nEND_IF;\n\
                {{ if (x) { y(); } }}\n{warning 'check me'}\nEND_PROGRAM\n";
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "pragmas.st", src);
+    let p = write_file(dir.path(), "pragmas.st", src);
     let o = cmd(
         &[
             "run",
@@ -565,7 +559,7 @@ fn methods_and_textual_sfc_are_one_diagnostic_each() {
     let src = "FUNCTION_BLOCK Motor\nVAR speed : INT; END_VAR\n  PROPERTY PUBLIC Speed : INT\n    Speed := speed;\n  END_PROPERTY\n  speed := speed + 1;\nEND_FUNCTION_BLOCK\n\
                PROGRAM main\nVAR m : Motor; END_VAR\n  m();\nEND_PROGRAM\n";
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "oop.st", src);
+    let p = write_file(dir.path(), "oop.st", src);
     let o = cmd(
         &["check", p.to_str().unwrap(), "--message-format", "json"],
         None,
@@ -580,7 +574,7 @@ fn function_without_inputs_is_called_with_empty_parentheses() {
     let src = "FUNCTION five : INT\n  five := 5;\nEND_FUNCTION\n\
                PROGRAM main\nVAR y : INT; END_VAR\n  y := five() + 1;\nEND_PROGRAM\n";
     let dir = tempfile::tempdir().unwrap();
-    let p = write(dir.path(), "five.st", src);
+    let p = write_file(dir.path(), "five.st", src);
     let rows = trace(&cmd(&["run", p.to_str().unwrap(), "--cycles", "1"], None));
     assert_eq!(column(&rows, "main.y"), ["6"]);
 }

@@ -4,6 +4,7 @@
 //! located diagnostics.
 
 mod common;
+use common::text_column;
 
 use std::path::{Path, PathBuf};
 use std::process::Output;
@@ -28,22 +29,8 @@ fn same_as_xml(st: &str, xml: &Path, cycles: u32, stimulus: &str, watch: &[&str]
     t
 }
 
-/// The values of one column.
-fn column(trace: &str, name: &str) -> Vec<String> {
-    let mut lines = trace.lines();
-    let k = lines
-        .next()
-        .unwrap()
-        .split(',')
-        .position(|c| c == name)
-        .unwrap();
-    lines
-        .map(|l| l.split(',').nth(k).unwrap().to_string())
-        .collect()
-}
-
 fn on(trace: &str, name: &str) -> Vec<usize> {
-    column(trace, name)
+    text_column(trace, name)
         .iter()
         .enumerate()
         .filter(|(_, v)| v.as_str() == "1")
@@ -75,8 +62,8 @@ fn traffic_light_with_timed_transitions() {
     assert_eq!(on(&t, "main.green")[..4], [5, 6, 7, 8]);
     assert_eq!(on(&t, "main.yellow")[..2], [9, 10]);
     // P: once per Green phase.
-    assert_eq!(column(&t, "main.cycles")[5], "1");
-    assert_eq!(column(&t, "main.cycles")[29], "3");
+    assert_eq!(text_column(&t, "main.cycles")[5], "1");
+    assert_eq!(text_column(&t, "main.cycles")[29], "3");
 }
 
 const SEQ: &[&str] = &[
@@ -154,9 +141,9 @@ fn action_qualifiers_match_the_xml_chart() {
     assert_eq!(on(&t, "main.stored"), [1, 2, 3, 4, 5, 6, 7]);
     assert_eq!(on(&t, "main.limited"), [1, 2, 3]);
     assert_eq!(on(&t, "main.delayed"), [3, 4, 5, 6, 7]);
-    assert_eq!(column(&t, "main.p_count")[14], "1");
-    assert_eq!(column(&t, "main.p0_count")[8], "1");
-    assert_eq!(column(&t, "main.s1_t")[8], "T#70ms");
+    assert_eq!(text_column(&t, "main.p_count")[14], "1");
+    assert_eq!(text_column(&t, "main.p0_count")[8], "1");
+    assert_eq!(text_column(&t, "main.s1_t")[8], "T#70ms");
 }
 
 /// `ladderc check` of `text`: the errors as (code, line, column).

@@ -12,7 +12,10 @@
 //!   `FB_BA_View` does not name its instance or program (`SUPER^`)", 59 in TF8040 Templates).
 
 mod common;
-use common::{column, in_dir, write_in};
+use common::{
+    cfc::{cfc_input, cfc_output, cfc_pin, cfc_wire},
+    column, in_dir, write_in,
+};
 
 /// Runs `file` in `dir` for `cycles` 10 ms scans with the sanitizers, tracing `watch`: the trace.
 fn run_in(dir: &std::path::Path, file: &str, cycles: u32, watch: &str) -> String {
@@ -191,34 +194,6 @@ END_PROGRAM
 }
 
 // ---- CFC ----
-
-fn cfc_pin(id: u32) -> String {
-    format!(r#"<o><v n="Negated">false</v><v n="Id">{id}L</v></o>"#)
-}
-
-fn cfc_text(text: &str) -> String {
-    format!(r#"<o n="Text" t="CFCText"><v n="Text">"{text}"</v></o>"#)
-}
-
-/// An input element reading `text`, its output pin `pin`, at `x, y`.
-fn cfc_input(text: &str, pin: u32, x: u32, y: u32) -> String {
-    format!(
-        r#"<o t="CFCInputElement"><o n="Output" t="CFCOutputPin"><v n="Negated">false</v><v n="Id">{pin}L</v></o>{}<v n="Bounds">"{x}, {y}, 0, 0"</v></o>"#,
-        cfc_text(text)
-    )
-}
-
-/// An output element writing `text`, its input pin `pin`, at `x, y`.
-fn cfc_output(text: &str, pin: u32, x: u32, y: u32) -> String {
-    format!(
-        r#"<o t="CFCOutputElement"><o n="Input" t="CFCInputPinWithSetReset"><v n="Negated">false</v><v n="SetReset" t="SetReset">None</v><v n="Id">{pin}L</v></o>{}<v n="Bounds">"{x}, {y}, 0, 0"</v></o>"#,
-        cfc_text(text)
-    )
-}
-
-fn cfc_wire(from: u32, to: u32) -> String {
-    format!(r#"<o t="CFCConnection"><v n="SourcePinId">{from}L</v><v n="DestPinId">{to}L</v></o>"#)
-}
 
 /// A function block box: its input pins `inputs` (name, pin id), its output pins `outputs`
 /// (name, pin id), `type_name` and `instance`, at `x, y`.

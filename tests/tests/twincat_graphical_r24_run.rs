@@ -15,7 +15,10 @@
 //!   method was a false E1072).
 
 mod common;
-use common::{column, run_stimulated_files};
+use common::{
+    cfc::{cfc_input, cfc_output, cfc_pin, cfc_text, cfc_wire},
+    column, run_stimulated_files,
+};
 
 // ---- a small writer of TwinCAT network-list archives (the shape TwinCAT 4024 saves) ----
 
@@ -375,34 +378,6 @@ fn a_box_with_en_feeds_another_box_its_result_or_its_types_initial_value() {
 }
 
 // ---- CFC charts ----
-
-fn cfc_pin(id: u32) -> String {
-    format!(r#"<o><v n="Negated">false</v><v n="Id">{id}L</v></o>"#)
-}
-
-fn cfc_text(text: &str) -> String {
-    format!(r#"<o n="Text" t="CFCText"><v n="Text">"{text}"</v></o>"#)
-}
-
-/// An input element reading `text`, its output pin `pin`, at `x, y`.
-fn cfc_input(text: &str, pin: u32, x: u32, y: u32) -> String {
-    format!(
-        r#"<o t="CFCInputElement"><o n="Output" t="CFCOutputPin"><v n="Negated">false</v><v n="Id">{pin}L</v></o>{}<v n="Bounds">"{x}, {y}, 0, 0"</v></o>"#,
-        cfc_text(text)
-    )
-}
-
-/// An output element writing `text`, its input pin `pin`, at `x, y`.
-fn cfc_output(text: &str, pin: u32, x: u32, y: u32) -> String {
-    format!(
-        r#"<o t="CFCOutputElement"><o n="Input" t="CFCInputPinWithSetReset"><v n="Negated">false</v><v n="SetReset" t="SetReset">None</v><v n="Id">{pin}L</v></o>{}<v n="Bounds">"{x}, {y}, 0, 0"</v></o>"#,
-        cfc_text(text)
-    )
-}
-
-fn cfc_wire(from: u32, to: u32) -> String {
-    format!(r#"<o t="CFCConnection"><v n="SourcePinId">{from}L</v><v n="DestPinId">{to}L</v></o>"#)
-}
 
 /// A comment as TwinCAT 4024 saves it.
 fn cfc_comment(text: &str, x: u32, y: u32) -> String {

@@ -78,21 +78,20 @@
 //! not copied here.
 
 mod common;
-use common::{check_text, rejected_heads, run_stimulated, run_traced, run_traced_files};
-use std::path::PathBuf;
-
-fn fixture(name: &str) -> PathBuf {
-    common::repo_root()
-        .join("tests/tests/fixtures/unseen")
-        .join(name)
-}
+use common::{
+    check_text, rejected_heads, run_stimulated, run_traced, run_traced_files, unseen_fixture,
+};
 
 /// `PACK_BITS := SHL(SHL(SHL(...), 1) OR ..., 1)` continued on two lines that start with `OR` is
 /// ST: the function packs B0..B3 into a byte, and the program's trace shows it for steps 0..4.
 /// Before: the body was read as IL, E0011 `unexpected ... after the instruction` on every line.
 #[test]
 fn st_expression_continued_on_lines_starting_with_or_is_st() {
-    let (trace, stderr) = run_traced(&fixture("r10_packed_bits.st"), 5, "main.step,main.packed");
+    let (trace, stderr) = run_traced(
+        &unseen_fixture("r10_packed_bits.st"),
+        5,
+        "main.step,main.packed",
+    );
     assert!(!stderr.contains("W0303"), "{stderr}");
     // step 0: nothing; 1: B0; 2: B1; 3: B0, B1 and B3 (8 + 2 + 1); 4: B1
     assert_eq!(
@@ -134,7 +133,7 @@ fn continued_expression_follows_its_inputs() {
 /// E1012 `input IN of DAY_OF_WEEK must be DATE, not UDINT` (the edition 3 standard function).
 #[test]
 fn own_function_named_like_an_edition3_function_is_called() {
-    let (trace, stderr) = run_traced(&fixture("r10_own_day_of_week.st"), 8, "main.weekday");
+    let (trace, stderr) = run_traced(&unseen_fixture("r10_own_day_of_week.st"), 8, "main.weekday");
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(
         common::column(&trace, "main.weekday"),
@@ -166,7 +165,10 @@ fn own_function_named_like_an_edition2_function_stays_standard() {
 #[test]
 fn global_list_headed_by_a_pragma_is_read_as_st() {
     let (trace, stderr) = run_traced_files(
-        &[&fixture("r10_gvl_pragma.txt"), &fixture("r10_gvl_prg.txt")],
+        &[
+            &unseen_fixture("r10_gvl_pragma.txt"),
+            &unseen_fixture("r10_gvl_prg.txt"),
+        ],
         5,
         // (since issue #13's eleventh round a globals-only text file is the list named after
         // it, so its globals are traced qualified: `tests/tests/lang_left_r11.rs`)
@@ -257,7 +259,11 @@ fn trunc_takes_its_integer_type_from_its_context() {
 /// `comment or pragma is never closed`.
 #[test]
 fn a_comment_nesting_leaves_unclosed_ends_at_its_first_closing() {
-    let (trace, stderr) = run_traced(&fixture("r10_commented_out_code.st"), 6, "main.k,main.f");
+    let (trace, stderr) = run_traced(
+        &unseen_fixture("r10_commented_out_code.st"),
+        6,
+        "main.k,main.f",
+    );
     assert_eq!(stderr.matches("warning[W0015]").count(), 1, "{stderr}");
     assert!(
         stderr.contains("r10_commented_out_code.st:20:3: warning[W0015]: this comment holds a `(*` without its own `*)`"),

@@ -109,25 +109,13 @@
 //! our own reproducing the constructs.
 
 mod common;
-use common::{column, run_stimulated_files};
+use common::{changes, column, run_stimulated_files};
 use std::path::{Path, PathBuf};
 
 fn fixture(name: &str) -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("tests/fixtures/unseen/r17")
         .join(name)
-}
-
-/// The cycles at which the column `name` changes, with its new value (the first row included).
-fn changes(trace: &str, name: &str) -> Vec<(usize, f64)> {
-    let col = column(trace, name);
-    let mut out = vec![(0, col[0])];
-    for (k, w) in col.windows(2).enumerate() {
-        if w[0] != w[1] {
-            out.push((k + 1, w[1]));
-        }
-    }
-    out
 }
 
 /// The OpenPLC sensor, active low: present (FALSE) from cycle 100 to 109.

@@ -91,7 +91,7 @@
 //! constructs.
 
 mod common;
-use common::{column, ladderc};
+use common::{changes, column, ladderc};
 use std::path::PathBuf;
 
 fn fixture(name: &str) -> PathBuf {
@@ -110,18 +110,6 @@ fn matiec_fixture(name: &str) -> PathBuf {
 /// exit 0 and no sanitizer report.
 fn run(files: &[PathBuf], cycles: u32, stimulus: &str, watch: &str) -> String {
     common::run_stimulated_files(files, &[], cycles, stimulus, watch).0
-}
-
-/// The cycles at which the column `name` changes, with its new value (the first row included).
-fn changes(trace: &str, name: &str) -> Vec<(usize, f64)> {
-    let col = column(trace, name);
-    let mut out = vec![(0, col[0])];
-    for (k, w) in col.windows(2).enumerate() {
-        if w[0] != w[1] {
-            out.push((k + 1, w[1]));
-        }
-    }
-    out
 }
 
 /// `ladderc check FILES`: exit 1 and the error lines up to their hints, the folder left out.

@@ -24,14 +24,7 @@
 //!   (before, E3013).
 
 mod common;
-use common::{check_text, run_traced, run_with_stimulus};
-use std::path::Path;
-
-fn fixture(name: &str) -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/fixtures/unseen")
-        .join(name)
-}
+use common::{check_text, run_traced, run_with_stimulus, unseen_fixture};
 
 /// A TwinCAT-style export (tc6_0200, `pouInstance` with an empty `typeName`) whose LD contact reads
 /// `A AND C`, whose FBD input variables are `n + 1`, `n * 2 + 1`, `n > 3 AND n <> 5` and `MAX(n, 4)`
@@ -40,7 +33,7 @@ fn fixture(name: &str) -> std::path::PathBuf {
 #[test]
 fn st_expressions_in_contacts_input_variables_and_sfc_conditions_run() {
     let trace = run_with_stimulus(
-        &fixture("twincat_expressions.xml"),
+        &unseen_fixture("twincat_expressions.xml"),
         10,
         "1,Ladder.A,TRUE\n2,Ladder.C,TRUE\n3,Ladder.B,TRUE\n4,Ladder.B,FALSE\n\
          2,Seq.EmergencyStop,FALSE\n8,Seq.EmergencyStop,TRUE\n",
@@ -76,7 +69,7 @@ fn st_expressions_in_contacts_input_variables_and_sfc_conditions_run() {
 /// network, localId); text that is no expression at all stays one E3011.
 #[test]
 fn a_wrong_expression_in_a_contact_is_one_located_error() {
-    let src = std::fs::read_to_string(fixture("twincat_expressions.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("twincat_expressions.xml")).unwrap();
     let (code, lines) = check_text("undeclared.xml", &src.replace("A AND C", "A AND Zz"));
     assert_eq!(code, Some(1));
     let errors: Vec<&String> = lines.iter().filter(|l| l.contains("error[")).collect();
@@ -123,7 +116,7 @@ fn a_wrong_expression_in_a_contact_is_one_located_error() {
 #[test]
 fn codesys_pin_names_of_the_bistables_are_the_iec_pins() {
     let trace = run_with_stimulus(
-        &fixture("codesys_bistables.xml"),
+        &unseen_fixture("codesys_bistables.xml"),
         7,
         "1,PLC_PRG.s,TRUE\n2,PLC_PRG.s,FALSE\n3,PLC_PRG.r,TRUE\n4,PLC_PRG.s,TRUE\n5,PLC_PRG.r,FALSE\n",
         &["PLC_PRG.s", "PLC_PRG.r", "PLC_PRG.q_rs", "PLC_PRG.q_sr"],
@@ -134,7 +127,7 @@ fn codesys_pin_names_of_the_bistables_are_the_iec_pins() {
          0,0,0,0,0,0\n1,10,1,0,1,1\n2,20,0,0,1,1\n3,30,0,1,0,0\n4,40,1,1,0,1\n5,50,1,0,1,1\n6,60,1,0,1,1\n"
     );
     // a pin no vendor names stays an error
-    let src = std::fs::read_to_string(fixture("codesys_bistables.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_bistables.xml")).unwrap();
     let (code, lines) = check_text("pins.xml", &src.replace("\"RESET1\"", "\"RESET2\""));
     assert_eq!(code, Some(1));
     assert!(
@@ -318,7 +311,7 @@ fn a_reference_written_as_a_derived_type_says_it_is_a_reference() {
 #[test]
 fn a_codesys_execute_box_runs_its_st_code() {
     let trace = run_with_stimulus(
-        &fixture("codesys_execute.xml"),
+        &unseen_fixture("codesys_execute.xml"),
         8,
         "1,PLC_PRG.run,TRUE\n6,PLC_PRG.run,FALSE\n",
         &[
@@ -337,7 +330,7 @@ fn a_codesys_execute_box_runs_its_st_code() {
          0,0,0,0,0,0,10\n1,10,1,1,0,1,20\n2,20,1,2,0,1,30\n3,30,1,0,1,1,40\n\
          4,40,1,1,1,1,50\n5,50,1,2,1,1,60\n6,60,0,2,1,0,70\n7,70,0,2,1,0,80\n"
     );
-    let src = std::fs::read_to_string(fixture("codesys_execute.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_execute.xml")).unwrap();
     let (code, lines) = check_text(
         "bad.xml",
         &src.replace("wraps := wraps + 1;", "wraps := nope + 1;"),
@@ -379,7 +372,7 @@ fn a_codesys_execute_box_runs_its_st_code() {
 #[test]
 fn the_power_flow_out_of_an_ld_box_is_its_first_output() {
     let trace = run_with_stimulus(
-        &fixture("codesys_ld_box_flow.xml"),
+        &unseen_fixture("codesys_ld_box_flow.xml"),
         9,
         "1,MAIN.start,TRUE\n6,MAIN.block,TRUE\n7,MAIN.start,FALSE\n",
         &["MAIN.start", "MAIN.block", "MAIN.done", "MAIN.lamp"],
@@ -391,7 +384,7 @@ fn the_power_flow_out_of_an_ld_box_is_its_first_output() {
          0,0,0,0,0,0\n1,10,1,0,0,0\n2,20,1,0,0,0\n3,30,1,0,0,0\n4,40,1,0,1,1\n\
          5,50,1,0,1,1\n6,60,1,1,0,1\n7,70,0,1,0,0\n8,80,0,1,0,0\n"
     );
-    let src = std::fs::read_to_string(fixture("codesys_ld_box_flow.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_ld_box_flow.xml")).unwrap();
     // (a coil whose variable is also an output's name reads that output: fb_en_eno_run's
     // ld_timer_box_with_en_and_eno_pins, coil `q` on TON.Q beside ENO)
     let (code, lines) = check_text(

@@ -14,14 +14,8 @@
 //!   (before, E3007 "unknown block type"); its ENO is its EN.
 
 mod common;
-use common::{check_text, run_stimulated};
-use std::path::{Path, PathBuf};
-
-fn fixture(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/fixtures/unseen")
-        .join(name)
-}
+use common::{check_text, run_stimulated, unseen_fixture};
+use std::path::Path;
 
 /// [`run_stimulated`], asserting also that no action was left uncompiled (W3401).
 fn run(file: &Path, cycles: u32, stimulus: &str, watch: &str) -> (String, String) {
@@ -66,7 +60,7 @@ fn columns(trace: &str, names: &[&str]) -> Vec<Vec<String>> {
 #[test]
 fn an_sfc_action_runs_one_scan_of_its_chart_per_call_from_the_body_and_through_an_instance() {
     let (trace, _) = run(
-        &fixture("codesys_sfc_actions.xml"),
+        &unseen_fixture("codesys_sfc_actions.xml"),
         11,
         "2,PLC_PRG.go,TRUE\n8,PLC_PRG.go,FALSE\n",
         "PLC_PRG.fb.__sfc_Sequence__X_Move,PLC_PRG.fb.__sfc_Sequence__T_Move,PLC_PRG.fb.Extend,\
@@ -98,7 +92,7 @@ fn an_sfc_action_runs_one_scan_of_its_chart_per_call_from_the_body_and_through_a
 /// `fb(Start := go)`) and as an action called every scan behave alike, cycle by cycle.
 #[test]
 fn an_sfc_action_behaves_as_the_same_chart_as_a_function_block_body() {
-    let src = std::fs::read_to_string(fixture("codesys_sfc_actions.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_sfc_actions.xml")).unwrap();
     let start = src.find("<SFC>").unwrap();
     let end = src.find("</SFC>").unwrap() + "</SFC>".len();
     let chart = &src[start..end];
@@ -118,7 +112,12 @@ fn an_sfc_action_behaves_as_the_same_chart_as_a_function_block_body() {
     let outputs = "PLC_PRG.fb.Extend,PLC_PRG.fb.Count,PLC_PRG.fb.Done,PLC_PRG.fb2.Extend,\
                    PLC_PRG.fb2.Count,PLC_PRG.fb2.Done";
     let names: Vec<&str> = outputs.split(',').map(str::trim).collect();
-    let (as_action, _) = run(&fixture("codesys_sfc_actions.xml"), 16, stimulus, outputs);
+    let (as_action, _) = run(
+        &unseen_fixture("codesys_sfc_actions.xml"),
+        16,
+        stimulus,
+        outputs,
+    );
     let (as_body, _) = run(&file, 16, stimulus, outputs);
     let a = columns(&as_action, &names);
     assert_eq!(a, columns(&as_body, &names));
@@ -135,7 +134,7 @@ fn an_sfc_action_behaves_as_the_same_chart_as_a_function_block_body() {
 #[test]
 fn an_sfc_action_called_from_il_runs_only_when_called() {
     let (trace, _) = run(
-        &fixture("codesys_sfc_actions.xml"),
+        &unseen_fixture("codesys_sfc_actions.xml"),
         16,
         "1,Lamp.enable,TRUE\n9,Lamp.enable,FALSE\n12,Lamp.enable,TRUE\n",
         "Lamp.enable,Lamp.light,Lamp.flashes,Lamp.__sfc_Blink__X_Dark,Lamp.__sfc_Blink__T_Dark",
@@ -166,7 +165,7 @@ fn an_sfc_action_called_from_il_runs_only_when_called() {
 /// 10 ms lit) and a copy Slow (40 ms dark, 10 ms lit) driving another variable.
 #[test]
 fn two_sfc_actions_with_the_same_step_names_keep_separate_state() {
-    let src = std::fs::read_to_string(fixture("codesys_sfc_actions.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_sfc_actions.xml")).unwrap();
     let start = src.find("<action name=\"Blink\">").unwrap();
     let end = action_end(&src, start);
     let slow = src[start..end]
@@ -224,7 +223,7 @@ fn two_sfc_actions_with_the_same_step_names_keep_separate_state() {
 #[test]
 fn ld_boxes_named_after_actions_call_them_when_powered() {
     let (trace, stderr) = run(
-        &fixture("codesys_action_boxes.xml"),
+        &unseen_fixture("codesys_action_boxes.xml"),
         8,
         "1,PLC_PRG.run,TRUE\n4,PLC_PRG.run,FALSE\n2,PLC_PRG.count,TRUE\n5,PLC_PRG.count,FALSE\n",
         "PLC_PRG.run,PLC_PRG.ticks,PLC_PRG.ticked,PLC_PRG.count,PLC_PRG.ctr.n,PLC_PRG.light",
@@ -248,7 +247,7 @@ fn ld_boxes_named_after_actions_call_them_when_powered() {
 /// network and localId; a box named after nothing stays E3007.
 #[test]
 fn an_action_box_with_another_input_is_one_located_error() {
-    let src = std::fs::read_to_string(fixture("codesys_action_boxes.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_action_boxes.xml")).unwrap();
     let wrong = src.replacen(
         "<variable formalParameter=\"EN\"><connectionPointIn><connection refLocalId=\"21\" />",
         "<variable formalParameter=\"Step\"><connectionPointIn><connection refLocalId=\"21\" />",
@@ -339,7 +338,7 @@ fn an_expression_reading_an_internal_variable_of_an_instance_runs() {
 /// chart's action is executed, here once per entry of step Lit (qualifier P).
 #[test]
 fn an_action_block_calls_an_action_of_an_instance() {
-    let src = std::fs::read_to_string(fixture("codesys_action_boxes.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_action_boxes.xml")).unwrap();
     let src = src.replacen(
         "<reference name=\"light\" /><connectionPointOut /></action>",
         "<reference name=\"light\" /><connectionPointOut /></action>\n\
@@ -379,7 +378,7 @@ fn an_action_block_calls_an_action_of_an_instance() {
 #[test]
 fn a_transition_after_a_convergence_of_branch_end_steps_leaves_the_active_one() {
     let (trace, _) = run(
-        &fixture("codesys_branch_ends.xml"),
+        &unseen_fixture("codesys_branch_ends.xml"),
         15,
         "1,Sorter.light,TRUE\n2,Sorter.light,FALSE\n3,Sorter.done,TRUE\n4,Sorter.done,FALSE\n\
          6,Sorter.metal,TRUE\n7,Sorter.metal,FALSE\n8,Sorter.done,TRUE\n9,Sorter.done,FALSE\n\
@@ -407,7 +406,7 @@ fn a_transition_after_a_convergence_of_branch_end_steps_leaves_the_active_one() 
 #[test]
 fn codesys_entry_step_and_exit_actions_of_steps_run() {
     let (trace, stderr) = run(
-        &fixture("codesys_step_actions.xml"),
+        &unseen_fixture("codesys_step_actions.xml"),
         8,
         "1,PPU.go,TRUE\n4,PPU.go,FALSE\n",
         "PPU.__sfc_X_Run,PPU.log,PPU.__sfc_X_Sub,PPU.flips,PPU.__sfc_ACT_Sub__X_B,\
@@ -428,7 +427,7 @@ fn codesys_entry_step_and_exit_actions_of_steps_run() {
          7,70,0,23331,0,1,0,1,1,8\n"
     );
     // a step action naming nothing is one E3122 at its attribute, located at the step
-    let src = std::fs::read_to_string(fixture("codesys_step_actions.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_step_actions.xml")).unwrap();
     let (code, lines) = check_text(
         "steps.xml",
         &src.replacen(">Tick</attribute>", ">Tock</attribute>", 1),
@@ -508,7 +507,7 @@ fn an_execute_box_in_an_fbd_action_calls_other_actions() {
 /// reported again (before, also E3128 "transition without a following step" and E3120).
 #[test]
 fn a_step_name_that_is_no_identifier_is_one_located_error() {
-    let src = std::fs::read_to_string(fixture("codesys_branch_ends.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_branch_ends.xml")).unwrap();
     let (code, lines) = check_text(
         "steps.xml",
         &src.replacen("name=\"Ramp1\"", "name=\"Ramp__1\"", 1),

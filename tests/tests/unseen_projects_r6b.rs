@@ -18,14 +18,7 @@
 //!   warning W0016 at each location (`tests/tests/unseen_projects_r11.rs`).
 
 mod common;
-use common::{check_text, ladderc, run_traced, run_with_stimulus, split_csv};
-use std::path::PathBuf;
-
-fn fixture(name: &str) -> PathBuf {
-    common::repo_root()
-        .join("tests/tests/fixtures/unseen")
-        .join(name)
-}
+use common::{check_text, ladderc, run_traced, run_with_stimulus, split_csv, unseen_fixture};
 
 /// The values of cycle `cycle`'s row of a trace, by column name; a quoted field (a string) without
 /// its quotes.
@@ -66,7 +59,7 @@ fn st_strings_hold_one_byte_per_latin1_character() {
         "main.degrees",
     ];
     let trace = run_with_stimulus(
-        &fixture("single_byte_strings.st"),
+        &unseen_fixture("single_byte_strings.st"),
         1,
         "0,main.from_input,Straße\n",
         &watch,
@@ -101,7 +94,7 @@ fn st_strings_hold_one_byte_per_latin1_character() {
 #[test]
 fn il_strings_hold_one_byte_per_latin1_character() {
     let (trace, _) = run_traced(
-        &fixture("single_byte_strings.il"),
+        &unseen_fixture("single_byte_strings.il"),
         1,
         "main.unit,main.n,main.text,main.at_deg,main.same",
     );
@@ -117,7 +110,7 @@ fn il_strings_hold_one_byte_per_latin1_character() {
 #[test]
 fn xml_string_initial_values_hold_one_byte_per_latin1_character() {
     let (trace, _) = run_traced(
-        &fixture("single_byte_strings.xml"),
+        &unseen_fixture("single_byte_strings.xml"),
         1,
         "main.label,main.n,main.shown",
     );
@@ -134,7 +127,7 @@ fn generated_c_escapes_the_bytes_of_latin1_characters() {
     let dir = tempfile::tempdir().unwrap();
     let out = ladderc()
         .arg("build")
-        .arg(fixture("single_byte_strings.st"))
+        .arg(unseen_fixture("single_byte_strings.st"))
         .arg("-o")
         .arg(dir.path())
         .output()
@@ -156,7 +149,7 @@ fn generated_c_escapes_the_bytes_of_latin1_characters() {
 fn characters_beyond_latin1_in_a_string_literal_are_w1416_and_become_question_marks() {
     let out = ladderc()
         .args(["--message-format", "short", "run"])
-        .arg(fixture("wide_char_in_string.st"))
+        .arg(unseen_fixture("wide_char_in_string.st"))
         .args(["--cycles", "2", "--sanitize", "--trace", "-"])
         .args([
             "--watch",
@@ -199,7 +192,7 @@ fn a_stimulus_string_beyond_latin1_is_refused() {
     std::fs::write(&stim, "cycle,variable,value\n0,main.from_input,€\n").unwrap();
     let out = ladderc()
         .arg("run")
-        .arg(fixture("single_byte_strings.st"))
+        .arg(unseen_fixture("single_byte_strings.st"))
         .args(["--cycles", "1", "--stimulus"])
         .arg(&stim)
         .output()
@@ -234,7 +227,7 @@ fn wstring_literals_comments_and_latin1_give_no_w1416() {
 fn a_location_after_the_type_is_one_w0016_per_declaration_with_the_iec_order() {
     let out = ladderc()
         .args(["--message-format", "short", "check"])
-        .arg(fixture("location_after_type.st"))
+        .arg(unseen_fixture("location_after_type.st"))
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();

@@ -33,14 +33,7 @@
 //! with a type mismatch, ladderc runs them and the 16 input combinations give the right output.
 
 mod common;
-use common::{column, run_traced};
-use std::path::PathBuf;
-
-fn fixture(name: &str) -> PathBuf {
-    common::repo_root()
-        .join("tests/tests/fixtures/unseen")
-        .join(name)
-}
+use common::{column, run_traced, unseen_fixture};
 
 /// The program, its function block and its structure type all come from the resource's vendor
 /// data; the task (20 ms, scans of 10 ms) runs the program every second scan, and the block counts
@@ -48,7 +41,7 @@ fn fixture(name: &str) -> PathBuf {
 #[test]
 fn codesys_device_export_reads_pous_and_types_from_the_resource_vendor_data() {
     let (trace, _) = run_traced(
-        &fixture("codesys_device_resource_pous.xml"),
+        &unseen_fixture("codesys_device_resource_pous.xml"),
         14,
         "PLC_PRG.counter",
     );
@@ -66,7 +59,7 @@ fn codesys_device_export_reads_pous_and_types_from_the_resource_vendor_data() {
 #[test]
 fn user_function_en_and_eno_in_st() {
     let (trace, _) = run_traced(
-        &fixture("user_function_en_eno.st"),
+        &unseen_fixture("user_function_en_eno.st"),
         8,
         "main.r,main.ok,main.r2,main.ok2,main.o2",
     );
@@ -86,7 +79,11 @@ fn user_function_en_and_eno_in_st() {
 /// over several lines reads it with `ENO => ok` (TMax 10: TRUE while the distance stays below).
 #[test]
 fn user_function_eno_in_il() {
-    let (trace, _) = run_traced(&fixture("user_function_eno.il"), 12, "inst.d2,inst.ok");
+    let (trace, _) = run_traced(
+        &unseen_fixture("user_function_eno.il"),
+        12,
+        "inst.d2,inst.ok",
+    );
     let d2 = column(&trace, "inst.d2");
     let ok = column(&trace, "inst.ok");
     for (k, (d, o)) in d2.iter().zip(&ok).enumerate() {
@@ -102,7 +99,7 @@ fn user_function_eno_in_il() {
 #[test]
 fn nested_deferred_il_operators_give_the_rung_output() {
     let (trace, _) = run_traced(
-        &fixture("nested_deferred_il.il"),
+        &unseen_fixture("nested_deferred_il.il"),
         16,
         "inst.i0,inst.i1,inst.i2,inst.i3,inst.o0",
     );
@@ -133,7 +130,7 @@ fn nested_deferred_il_operators_give_the_rung_output() {
 #[test]
 fn a_for_loop_that_changes_its_control_variable_runs_as_written_and_warns() {
     let (trace, stderr) = run_traced(
-        &fixture("for_control_written.st"),
+        &unseen_fixture("for_control_written.st"),
         2,
         "main.passes,main.last,main.inner",
     );

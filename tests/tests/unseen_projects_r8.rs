@@ -68,14 +68,8 @@
 //! through `ladderc run` (C compiled with the sanitizers) or `ladderc check`.
 
 mod common;
-use common::{check_text, rejected_heads, run_stimulated};
+use common::{check_text, rejected_heads, run_stimulated, unseen_fixture};
 use std::path::{Path, PathBuf};
-
-fn fixture(name: &str) -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("tests/fixtures/unseen")
-        .join(name)
-}
 
 /// [`run_stimulated`]: the trace.
 fn run(file: &Path, cycles: u32, stimulus: &str, watch: &str) -> String {
@@ -90,7 +84,7 @@ fn run(file: &Path, cycles: u32, stimulus: &str, watch: &str) -> String {
 #[test]
 fn a_parallel_branch_ending_in_a_jump_back_into_itself_loops_beside_the_convergence() {
     let trace = run(
-        &fixture("codesys_parallel_branch_jump.xml"),
+        &unseen_fixture("codesys_parallel_branch_jump.xml"),
         13,
         "1,Tank.start,TRUE\n2,Tank.start,FALSE\n3,Tank.pulse,TRUE\n4,Tank.pulse,FALSE\n\
          5,Tank.full,TRUE\n6,Tank.full,FALSE\n6,Tank.pulse2,TRUE\n7,Tank.pulse2,FALSE\n\
@@ -124,7 +118,7 @@ fn a_parallel_branch_ending_in_a_jump_back_into_itself_loops_beside_the_converge
 /// can never fire (unreachable): E3128 at the convergence.
 #[test]
 fn a_jump_out_of_a_parallel_branch_or_a_convergence_of_jumps_only_is_e3128() {
-    let src = std::fs::read_to_string(fixture("codesys_parallel_branch_jump.xml")).unwrap();
+    let src = std::fs::read_to_string(unseen_fixture("codesys_parallel_branch_jump.xml")).unwrap();
     let (code, lines) = check_text(
         "unsafe.xml",
         &src.replace("targetName=\"Stir\"", "targetName=\"Drain\""),
@@ -186,7 +180,7 @@ fn a_jump_out_of_a_parallel_branch_or_a_convergence_of_jumps_only_is_e3128() {
 #[test]
 fn a_string_initial_value_without_its_own_quotes_is_the_text_itself_as_beremiz_reads_it() {
     let trace = run(
-        &fixture("beremiz_string_init.xml"),
+        &unseen_fixture("beremiz_string_init.xml"),
         2,
         "",
         "instance0.n_code,instance0.n_plain,instance0.n_quoted,instance0.n_wide,instance0.open_,\

@@ -18,20 +18,13 @@
 //!   trace/stimulus name; READ_ONLY refuses a stimulus. Before: E0019 (XML: not read).
 
 mod common;
-use common::{column, ladderc, run_traced};
-use std::path::PathBuf;
-
-fn fixture(name: &str) -> PathBuf {
-    common::repo_root()
-        .join("tests/tests/fixtures/unseen")
-        .join(name)
-}
+use common::{column, ladderc, run_traced, unseen_fixture};
 
 /// `ladderc check FILE` (short format): exit code and the error and warning lines.
 fn check(name: &str) -> (Option<i32>, Vec<String>) {
     let out = ladderc()
         .args(["--message-format", "short", "check"])
-        .arg(fixture(name))
+        .arg(unseen_fixture(name))
         .output()
         .unwrap();
     let lines = String::from_utf8_lossy(&out.stderr)
@@ -48,7 +41,7 @@ fn check(name: &str) -> (Option<i32>, Vec<String>) {
 #[test]
 fn codesys_types_without_semicolon_before_end_type_run() {
     let (trace, stderr) = run_traced(
-        &fixture("codesys_types_without_semicolon.st"),
+        &unseen_fixture("codesys_types_without_semicolon.st"),
         7,
         "PLC_PRG.tank.level,PLC_PRG.tank.filling,PLC_PRG.tank_full",
     );
@@ -134,7 +127,7 @@ fn xml_pou_with_pointer_declarations_is_one_located_error() {
 #[test]
 fn hierarchical_addresses_run_and_alias() {
     let trace = common::run_with_stimulus(
-        &fixture("hierarchical_addresses.st"),
+        &unseen_fixture("hierarchical_addresses.st"),
         7,
         "0,%IW0.0,400\n1,%IX1.0.0,TRUE\n2,%IX1.0.0,FALSE\n3,%IW0.0,800\n4,%IX1.0.1,TRUE\n5,%IX1.0.1,FALSE\n",
         &[
@@ -215,7 +208,7 @@ fn unsupported_address_forms_stay_located_errors() {
     );
     let out = ladderc()
         .args(["run"])
-        .arg(fixture("hierarchical_addresses.st"))
+        .arg(unseen_fixture("hierarchical_addresses.st"))
         .args(["--cycles", "1", "--watch", "%IX9.9.9"])
         .output()
         .unwrap();
@@ -234,7 +227,7 @@ fn unsupported_address_forms_stay_located_errors() {
 #[test]
 fn var_access_paths_are_trace_and_stimulus_names() {
     let trace = common::run_with_stimulus(
-        &fixture("var_access.st"),
+        &unseen_fixture("var_access.st"),
         9,
         "1,speed_setpoint,30\n5,speed_setpoint,0\n",
         &[
@@ -277,7 +270,7 @@ fn read_only_access_paths_refuse_writes() {
         std::fs::write(&stim, format!("cycle,variable,value\n{row}\n")).unwrap();
         let out = ladderc()
             .arg("run")
-            .arg(fixture("var_access.st"))
+            .arg(unseen_fixture("var_access.st"))
             .args(["--cycles", "3", "--stimulus"])
             .arg(&stim)
             .output()
@@ -295,7 +288,7 @@ fn read_only_access_paths_refuse_writes() {
 #[test]
 fn var_access_in_an_il_configuration() {
     let trace = common::run_with_stimulus(
-        &fixture("var_access.il"),
+        &unseen_fixture("var_access.il"),
         6,
         "3,clear_parts,TRUE\n4,clear_parts,FALSE\n",
         &["parts", "clear_parts"],
@@ -312,7 +305,7 @@ fn var_access_in_an_il_configuration() {
 #[test]
 fn xml_access_vars_are_access_paths() {
     let trace = common::run_with_stimulus(
-        &fixture("var_access_tc6.xml"),
+        &unseen_fixture("var_access_tc6.xml"),
         5,
         "0,fill_rate,30\n",
         &["fill_rate", "tank_level", "tank_high"],
@@ -332,7 +325,7 @@ fn xml_access_vars_are_access_paths() {
 /// Each wrong access path is one located E0308 saying what is wrong.
 #[test]
 fn wrong_access_paths_are_located_errors() {
-    let src = std::fs::read_to_string(fixture("var_access.st")).unwrap().replace(
+    let src = std::fs::read_to_string(unseen_fixture("var_access.st")).unwrap().replace(
         "speed_setpoint : cpu.line.setpoint : INT READ_WRITE;",
         "speed_setpoint : cpu.line.setpoint : DINT READ_WRITE;\n        ghost : cpu.line.nothing : INT;\n        ghost2 : cpu.other.x : INT;\n        ghost3 : line.ramp.foo : INT;\n        speed_setpoint : line.setpoint : INT;",
     );
@@ -351,7 +344,7 @@ fn wrong_access_paths_are_located_errors() {
     }
     let (code, lines) = common::check_text(
         "dir.st",
-        &std::fs::read_to_string(fixture("var_access.st"))
+        &std::fs::read_to_string(unseen_fixture("var_access.st"))
             .unwrap()
             .replace("INT READ_WRITE;", "INT READ_SOMETIMES;"),
     );
@@ -369,7 +362,7 @@ fn wrong_access_paths_are_located_errors() {
 fn xml_variable_at_a_hierarchical_address() {
     let dir = tempfile::tempdir().unwrap();
     let f = dir.path().join("h.xml");
-    let src = std::fs::read_to_string(fixture("var_access_tc6.xml"))
+    let src = std::fs::read_to_string(unseen_fixture("var_access_tc6.xml"))
         .unwrap()
         .replace(
             r#"<variable name="inflow"><type><INT/></type></variable>"#,

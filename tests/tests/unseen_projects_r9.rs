@@ -51,14 +51,7 @@
 //! licence that allows redistribution or are GPL: none of their files is copied here.
 
 mod common;
-use common::{check_text, rejected_heads, run_traced_files};
-use std::path::PathBuf;
-
-fn fixture(name: &str) -> PathBuf {
-    common::repo_root()
-        .join("tests/tests/fixtures/unseen")
-        .join(name)
-}
+use common::{check_text, rejected_heads, run_traced_files, unseen_fixture};
 
 /// A function block and a program in two files, each without its `END_*` at the end of the file
 /// (CODESYS objects): both compile, each gets W0014 at the end of its file, and they run: the
@@ -68,8 +61,8 @@ fn fixture(name: &str) -> PathBuf {
 fn pous_ending_at_the_end_of_their_files_without_end_keywords_run_with_w0014() {
     let (trace, stderr) = run_traced_files(
         &[
-            &fixture("codesys_object_fb.st"),
-            &fixture("codesys_object_prg.st"),
+            &unseen_fixture("codesys_object_fb.st"),
+            &unseen_fixture("codesys_object_prg.st"),
         ],
         10,
         "PLC_PRG.barrier,PLC_PRG.total",

@@ -20,20 +20,7 @@
 //!   has no field NcToPlc").
 
 mod common;
-use common::{check_text, column, in_dir, run_text, write_in};
-
-/// The values of the trace column `name` as text, one per cycle.
-fn texts(trace: &str, name: &str) -> Vec<String> {
-    let mut lines = trace.lines();
-    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let k = header
-        .iter()
-        .position(|h| *h == name)
-        .unwrap_or_else(|| panic!("no column {name} in {trace}"));
-    lines
-        .map(|l| l.split(',').nth(k).unwrap().to_string())
-        .collect()
-}
+use common::{check_text, column, in_dir, run_text, text_column, write_in};
 
 /// A TwinCAT 3 object of one program MAIN with `decl` (its VAR block's lines) and `body` (ST).
 fn tc_pou(decl: &str, body: &str) -> String {
@@ -85,7 +72,7 @@ sAfter := sText;
     assert_eq!(column(&trace, "MAIN.nLen"), [1.0]);
     assert_eq!(column(&trace, "MAIN.nLen2"), [2.0]);
     assert_eq!(column(&trace, "MAIN.nPast"), [0.0]);
-    assert_eq!(texts(&trace, "MAIN.sAfter"), ["\"AB\""]);
+    assert_eq!(text_column(&trace, "MAIN.sAfter"), ["\"AB\""]);
 }
 
 /// TwinCAT: an offset past the declared length (a computed 25 of a STRING(20)) reads 0, its write
@@ -118,7 +105,7 @@ sText[i] := 65;
     );
     assert_eq!(code, Some(0), "{stderr}");
     assert_eq!(column(&trace, "MAIN.nRead"), [0.0]);
-    assert_eq!(texts(&trace, "MAIN.sText"), ["\"ABC\""]);
+    assert_eq!(text_column(&trace, "MAIN.sText"), ["\"ABC\""]);
     assert!(
         stderr.contains("string index out of range") && stderr.contains("index 25 outside 0..20"),
         "{stderr}"

@@ -703,6 +703,16 @@ impl Operand {
             span,
         }))
     }
+    /// A reference to `of` (`REF(x)`; `NULL` when `of` is `None`), spanning `span`: neither made
+    /// for one call ([`RefOperand::call_scoped`]) nor written `ADR(x)` ([`RefOperand::address_of`]).
+    pub fn reference(of: Option<VarRef>, span: Span) -> Operand {
+        Operand::Ref(Box::new(RefOperand {
+            of,
+            span,
+            call_scoped: false,
+            address_of: false,
+        }))
+    }
 }
 
 // ---------------------------------------------------------------- declarations

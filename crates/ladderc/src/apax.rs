@@ -50,8 +50,10 @@ pub fn expand(
             continue;
         }
         let project = if p.is_dir() && p.join("apax.yml").is_file() {
-            let mut files = Vec::new();
-            st_files(&p.join("src"), 0, &mut files);
+            let files =
+                crate::folder_walk::files_under(&p.join("src"), MAX_DEPTH, MAX_FILES, |f| {
+                    crate::twincat::has_extension(f, "st")
+                });
             if files.is_empty() {
                 // nothing under src/: the folder is reported as an input as before
                 out.push(p.clone());
@@ -195,33 +197,6 @@ fn strip_comment(line: &str) -> &str {
 fn symbol(item: &str) -> Option<String> {
     let s = item.trim().trim_matches(|c| c == '"' || c == '\'').trim();
     crate::openplc_v4::is_name(s).then(|| s.to_string())
-}
-
-/// The `.st` files under `dir`, `depth` folders down, in name order.
-fn st_files(dir: &Path, depth: usize, out: &mut Vec<PathBuf>) {
-    if depth > MAX_DEPTH || out.len() >= MAX_FILES {
-        return;
-    }
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return;
-    };
-    let mut entries: Vec<_> = entries.filter_map(Result::ok).collect();
-    entries.sort_by_key(|e| e.file_name());
-    for e in entries {
-        let Ok(t) = e.file_type() else { continue };
-        let path = e.path();
-        if t.is_dir() {
-            st_files(&path, depth + 1, out);
-        } else if t.is_file()
-            && path
-                .extension()
-                .and_then(|x| x.to_str())
-                .is_some_and(|x| x.eq_ignore_ascii_case("st"))
-            && out.len() < MAX_FILES
-        {
-            out.push(path);
-        }
-    }
 }
 
 #[cfg(test)]

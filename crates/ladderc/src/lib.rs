@@ -55,7 +55,8 @@
 //! and [`xml_context`]. Beckhoff Tc2_MC2 motion: [`tc2_mc2`] (spellings), [`tc2_axis_ref`] (AXIS_REF
 //! members), [`tc2_override`] (MC_Power's Override), [`tc2_error_id`] (UDINT ErrorIDs), [`tc2_blocks`] (MC_MoveModulo, MC_Jog),
 //! [`axis_links`] (each AXIS_REF its own axis), [`block_temps`] (expressions as block inputs);
-//! `tool_semantics` (W1465, W1466: a Beremiz or OpenPLC project under a profile with other semantics).
+//! `tool_semantics` (W1465, W1466: a Beremiz or OpenPLC project under a profile with other semantics);
+//! `folder_walk` (the bounded, sorted walk of an AX or OpenPLC v4 project folder for its sources).
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -72,6 +73,7 @@ pub mod codesys_v23;
 pub mod codesys_v23_io;
 pub mod depfile;
 pub mod encoding;
+mod folder_walk;
 pub mod fuzzing;
 pub mod generic_blocks;
 pub mod loop_guard;

@@ -88,8 +88,7 @@ pub fn expand(
             },
         };
         let p = &dir;
-        let mut files = Vec::new();
-        pou_files(&p.join("pous"), 0, &mut files);
+        let mut files = pou_files(&p.join("pous"));
         files.sort();
         // the editor's earlier projects keep their POUs in project.json (`data.pous[].data`)
         if files.is_empty() && has_inline_pous(&json) {
@@ -150,36 +149,17 @@ fn has_inline_pous(json: &Value) -> bool {
 
 /// Whether the folder `dir` has POU files under `pous/`.
 fn has_pou_files(dir: &Path) -> bool {
-    let mut files = Vec::new();
-    pou_files(&dir.join("pous"), 0, &mut files);
-    !files.is_empty()
+    !pou_files(&dir.join("pous")).is_empty()
 }
 
-/// The POU files under `dir`, `depth` folders down.
-fn pou_files(dir: &Path, depth: usize, out: &mut Vec<PathBuf>) {
-    if depth > MAX_DEPTH || out.len() >= MAX_FILES {
-        return;
-    }
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return;
-    };
-    let mut entries: Vec<_> = entries.filter_map(Result::ok).collect();
-    entries.sort_by_key(|e| e.file_name());
-    for e in entries {
-        let Ok(t) = e.file_type() else { continue };
-        let path = e.path();
-        if t.is_dir() {
-            pou_files(&path, depth + 1, out);
-        } else if t.is_file()
-            && path
-                .extension()
-                .and_then(|x| x.to_str())
-                .is_some_and(|x| POU_EXTENSIONS.contains(&x.to_ascii_lowercase().as_str()))
-            && out.len() < MAX_FILES
-        {
-            out.push(path);
-        }
-    }
+/// The POU files under `dir` (at most [`MAX_DEPTH`] folders down, at most [`MAX_FILES`]), in name
+/// order.
+fn pou_files(dir: &Path) -> Vec<PathBuf> {
+    crate::folder_walk::files_under(dir, MAX_DEPTH, MAX_FILES, |f| {
+        f.extension()
+            .and_then(|x| x.to_str())
+            .is_some_and(|x| POU_EXTENSIONS.contains(&x.to_ascii_lowercase().as_str()))
+    })
 }
 
 /// An IEC 61131-3 identifier.

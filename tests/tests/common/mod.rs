@@ -1,5 +1,8 @@
-//! Helpers shared by the end-to-end tests: the binary, the corpus, exit-status checks.
+//! Helpers shared by the end-to-end tests: the binary, the corpus, exit-status checks; the
+//! builders of TwinCAT CFC charts in [`cfc`].
 #![allow(dead_code)]
+
+pub mod cfc;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
@@ -283,6 +286,79 @@ pub fn column(trace: &str, name: &str) -> Vec<f64> {
         .collect()
 }
 
+/// The text column `name` of a trace (CSV text with a header row), one value per cycle, as written
+/// (TIME, TOD and DT values as literals, `T#1500ms`). Panics when the column is missing.
+pub fn text_column(trace: &str, name: &str) -> Vec<String> {
+    let mut lines = trace.lines();
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let k = header
+        .iter()
+        .position(|h| *h == name)
+        .unwrap_or_else(|| panic!("no column {name} in {trace}"));
+    lines
+        .map(|l| l.split(',').nth(k).unwrap().to_string())
+        .collect()
+}
+
+/// The cycles at which the numeric column `name` of a trace changes, with its new value (the first
+/// row included).
+pub fn changes(trace: &str, name: &str) -> Vec<(usize, f64)> {
+    let col = column(trace, name);
+    let mut out = vec![(0, col[0])];
+    for (k, w) in col.windows(2).enumerate() {
+        if w[0] != w[1] {
+            out.push((k + 1, w[1]));
+        }
+    }
+    out
+}
+
+/// `text` written as `plc.xml` in a fresh folder and run there as [`run_with_stimulus`] does.
+pub fn run_xml_with_stimulus(text: &str, cycles: u32, stimulus: &str, watch: &[&str]) -> String {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("plc.xml");
+    std::fs::write(&file, text).unwrap();
+    run_with_stimulus(&file, cycles, stimulus, watch)
+}
+
+/// A PLCopen TC6 project: `fbs` (whole `<pou>` elements), then program `main` with the local
+/// variables `vars` (`name:TYPE` pairs, TYPE elementary or a block type) and `body` (an `<LD>` or
+/// `<FBD>` element), run as instance `m` by a 10 ms task.
+pub fn plcopen_program(fbs: &str, vars: &[(&str, &str)], body: &str) -> String {
+    let vars: String = vars
+        .iter()
+        .map(|(n, t)| {
+            let ty = if t.chars().all(|c| c.is_ascii_uppercase()) {
+                format!("<{t}/>")
+            } else {
+                format!("<derived name=\"{t}\"/>")
+            };
+            format!("<variable name=\"{n}\"><type>{ty}</type></variable>\n")
+        })
+        .collect();
+    format!(
+        r#"<?xml version="1.0" encoding="utf-8"?>
+<project xmlns="http://www.plcopen.org/xml/tc6_0201" xmlns:xhtml="http://www.w3.org/1999/xhtml">
+<fileHeader companyName="t" productName="t" productVersion="1" creationDateTime="2026-01-01T00:00:00"/>
+<contentHeader name="t"><coordinateInfo><fbd><scaling x="0" y="0"/></fbd><ld><scaling x="0" y="0"/></ld><sfc><scaling x="0" y="0"/></sfc></coordinateInfo></contentHeader>
+<types><dataTypes/><pous>
+{fbs}
+<pou name="main" pouType="program">
+<interface><localVars>
+{vars}</localVars></interface>
+<body>
+{body}
+</body>
+</pou>
+</pous></types>
+<instances><configurations><configuration name="c"><resource name="r">
+<task name="t" priority="0" interval="T#10ms"><pouInstance name="m" typeName="main"/></task>
+</resource></configuration></configurations></instances>
+</project>
+"#
+    )
+}
+
 /// The diagnostic lines of `stderr` (short format) that are errors, and warnings too with
 /// `with_warnings`, each up to its hint, with the folder `strip` left out of their paths.
 pub fn diagnostic_heads(stderr: &[u8], strip: &Path, with_warnings: bool) -> Vec<String> {
@@ -362,6 +438,18 @@ pub fn check_text(name: &str, src: &str) -> (Option<i32>, Vec<String>) {
         .map(|l| l.replace(&prefix, ""))
         .collect();
     (out.status.code(), lines)
+}
+
+/// Writes `text` to `dir/name` (its folder exists) and returns its path.
+pub fn write_file(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// The path of `name` among the unseen projects' fixtures (`tests/tests/fixtures/unseen/`).
+pub fn unseen_fixture(name: &str) -> PathBuf {
+    repo_root().join("tests/tests/fixtures/unseen").join(name)
 }
 
 /// `ladderc --message-format short ARGS` run in `dir`: exit code, stdout, stderr.

@@ -597,13 +597,7 @@ fn needs(env: &Env, s: &Stmt) -> bool {
                     return true;
                 }
             }
-            for a in &p.accessors {
-                match a {
-                    Accessor::Index(ix) => stack.extend(ix.iter()),
-                    Accessor::Call { args, .. } => stack.extend(args.iter().map(|a| &a.value)),
-                    _ => {}
-                }
-            }
+            stack.extend(p.accessor_exprs());
             continue;
         }
         let Some(e) = stack.pop() else {

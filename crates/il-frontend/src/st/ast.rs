@@ -446,4 +446,17 @@ impl Place {
             _ => None,
         }
     }
+
+    /// The expressions inside its accessors, in order: each index of `[i, j + 1]`, each argument
+    /// of a method's call `.M(x)`.
+    pub fn accessor_exprs(&self) -> impl Iterator<Item = &Expr> {
+        self.accessors.iter().flat_map(|a| {
+            let (index, args): (&[Expr], &[Arg]) = match a {
+                Accessor::Index(ix) => (ix, &[]),
+                Accessor::Call { args, .. } => (&[], args),
+                _ => (&[], &[]),
+            };
+            index.iter().chain(args.iter().map(|a| &a.value))
+        })
+    }
 }

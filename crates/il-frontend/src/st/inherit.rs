@@ -492,7 +492,7 @@ fn in_outs_by_reference(
 /// In the IL body of `p`, `CAL inst(x := v)` where `x` is a converted VAR_IN_OUT of `inst`'s block
 /// (`by_reference`: block -> parameters, upper-case): `x := REF(v)`.
 fn pass_by_reference(p: &mut crate::ast::Pou, by_reference: &HashMap<String, Vec<String>>) {
-    use crate::ast::{CallArgs, IlStmt, InstrKind, Operand, RefOperand};
+    use crate::ast::{CallArgs, IlStmt, InstrKind, Operand};
     let types: HashMap<String, String> = p
         .var_blocks
         .iter()
@@ -524,13 +524,7 @@ fn pass_by_reference(p: &mut crate::ast::Pou, by_reference: &HashMap<String, Vec
                 continue;
             }
             if let Operand::Var(v) = &a.value {
-                let span = v.span;
-                a.value = Operand::Ref(Box::new(RefOperand {
-                    of: Some(v.clone()),
-                    span,
-                    call_scoped: false,
-                    address_of: false,
-                }));
+                a.value = Operand::reference(Some(v.clone()), v.span);
             }
         }
     }

@@ -165,6 +165,22 @@ fn ld(o: Operand, span: Span) -> IlStmt {
     simple(Op::Ld, false, Some(o), span)
 }
 
+/// IL's deferred operation `op( operand ... )` spanning `span`: `body` runs on a current result
+/// loaded from `operand`, and `op` then combines the current result before with the one `body`
+/// leaves.
+fn deferred(op: Op, operand: Operand, body: Vec<IlStmt>, span: Span) -> IlStmt {
+    instr(
+        InstrKind::Deferred {
+            op,
+            negate: false,
+            operand: Some(Box::new(operand)),
+            body,
+            close: span,
+        },
+        span,
+    )
+}
+
 fn jump(cond: Condition, label: &Ident, span: Span) -> IlStmt {
     instr(
         InstrKind::Jump {
@@ -624,15 +640,7 @@ impl<'d> PouLowering<'d> {
             span,
         ));
         for hidden in &bound_refs {
-            out.push(ld(
-                Operand::Ref(Box::new(il::RefOperand {
-                    of: None,
-                    span,
-                    call_scoped: false,
-                    address_of: false,
-                })),
-                span,
-            ));
+            out.push(ld(Operand::reference(None, span), span));
             out.push(simple(Op::St, false, Some(var_operand(hidden)), span));
         }
         self.stmt_list(&after, out, diags);
@@ -837,6 +845,23 @@ impl<'d> PouLowering<'d> {
         for s in stmts {
             self.stmt(s, out, diags);
         }
+    }
+
+    /// A loop's `body` (WHILE, REPEAT, FOR), where EXIT jumps to `exit` and CONTINUE to `cont`.
+    fn loop_body(
+        &mut self,
+        body: &[Stmt],
+        exit: &Ident,
+        cont: &Ident,
+        out: &mut Vec<IlStmt>,
+        diags: &mut Diagnostics,
+    ) {
+        self.loops.push(LoopLabels {
+            exit: exit.clone(),
+            cont: cont.clone(),
+        });
+        self.stmt_list(body, out, diags);
+        self.loops.pop();
     }
 
     fn stmt(&mut self, s: &Stmt, out: &mut Vec<IlStmt>, diags: &mut Diagnostics) {
@@ -1178,12 +1203,7 @@ impl<'d> PouLowering<'d> {
                 self.poisoned = false;
                 self.cond_value(cond, "WHILE condition", out, diags);
                 out.push(jump(Condition::IfFalse, &end, cond.span));
-                self.loops.push(LoopLabels {
-                    exit: end.clone(),
-                    cont: test.clone(),
-                });
-                self.stmt_list(body, out, diags);
-                self.loops.pop();
+                self.loop_body(body, &end, &test, out, diags);
                 if !ends_with_transfer(out) {
                     // the jump back is located at `WHILE cond` (the loop guard of `ladderc run`
                     // reports a loop that never ends there)
@@ -1202,12 +1222,7 @@ impl<'d> PouLowering<'d> {
                 let cont = self.fresh_label("UNTIL", until.span);
                 let end = self.fresh_label("END_REPEAT", span);
                 out.push(IlStmt::Label(top.clone()));
-                self.loops.push(LoopLabels {
-                    exit: end.clone(),
-                    cont: cont.clone(),
-                });
-                self.stmt_list(body, out, diags);
-                self.loops.pop();
+                self.loop_body(body, &end, &cont, out, diags);
                 out.push(IlStmt::Label(cont));
                 // the condition's ExST assignments, before each test (also after a CONTINUE)
                 self.stmt_list(setup, out, diags);
@@ -1352,14 +1367,10 @@ impl<'d> PouLowering<'d> {
                         let at = lo.span().to(hi.span());
                         out.push(ld(sel.clone(), at));
                         out.push(simple(Op::Ge, false, Some(lo), at));
-                        out.push(instr(
-                            InstrKind::Deferred {
-                                op: Op::And,
-                                negate: false,
-                                operand: Some(Box::new(sel.clone())),
-                                body: vec![simple(Op::Le, false, Some(hi), at)],
-                                close: at,
-                            },
+                        out.push(deferred(
+                            Op::And,
+                            sel.clone(),
+                            vec![simple(Op::Le, false, Some(hi), at)],
                             at,
                         ));
                     }
@@ -1625,47 +1636,30 @@ impl<'d> PouLowering<'d> {
                 // (step >= 0 AND i > limit) OR (step < 0 AND i < limit)
                 out.push(ld(step.clone(), at));
                 out.push(simple(Op::Ge, false, Some(int_lit(0, at)), at));
-                out.push(instr(
-                    InstrKind::Deferred {
-                        op: Op::And,
-                        negate: false,
-                        operand: Some(Box::new(i.clone())),
-                        body: vec![simple(Op::Gt, false, Some(limit.clone()), at)],
-                        close: at,
-                    },
+                out.push(deferred(
+                    Op::And,
+                    i.clone(),
+                    vec![simple(Op::Gt, false, Some(limit.clone()), at)],
                     at,
                 ));
-                out.push(instr(
-                    InstrKind::Deferred {
-                        op: Op::Or,
-                        negate: false,
-                        operand: Some(Box::new(step.clone())),
-                        body: vec![
-                            simple(Op::Lt, false, Some(int_lit(0, at)), at),
-                            instr(
-                                InstrKind::Deferred {
-                                    op: Op::And,
-                                    negate: false,
-                                    operand: Some(Box::new(i.clone())),
-                                    body: vec![simple(Op::Lt, false, Some(limit.clone()), at)],
-                                    close: at,
-                                },
-                                at,
-                            ),
-                        ],
-                        close: at,
-                    },
+                out.push(deferred(
+                    Op::Or,
+                    step.clone(),
+                    vec![
+                        simple(Op::Lt, false, Some(int_lit(0, at)), at),
+                        deferred(
+                            Op::And,
+                            i.clone(),
+                            vec![simple(Op::Lt, false, Some(limit.clone()), at)],
+                            at,
+                        ),
+                    ],
                     at,
                 ));
             }
         }
         out.push(jump(Condition::IfTrue, &end, at));
-        self.loops.push(LoopLabels {
-            exit: end.clone(),
-            cont: cont.clone(),
-        });
-        self.stmt_list(body, out, diags);
-        self.loops.pop();
+        self.loop_body(body, &end, &cont, out, diags);
         out.push(IlStmt::Label(cont));
         // a bit-string counter's step is reported (W1436) at the counter
         let bit_counter = cty_is_bits;
@@ -1810,15 +1804,7 @@ impl<'d> PouLowering<'d> {
             span,
         ));
         for v in reset {
-            out.push(ld(
-                Operand::Ref(Box::new(il::RefOperand {
-                    of: None,
-                    span,
-                    call_scoped: false,
-                    address_of: false,
-                })),
-                span,
-            ));
+            out.push(ld(Operand::reference(None, span), span));
             out.push(simple(Op::St, false, Some(Operand::Var(v)), span));
         }
     }
@@ -2147,12 +2133,7 @@ impl<'d> PouLowering<'d> {
                     }] if name.is(super::refs::REF_ASSIGN)
                         || name.is(super::refs::REF_ASSIGN_CALL) =>
                     {
-                        return Some(Operand::Ref(Box::new(il::RefOperand {
-                            of: None,
-                            span: e.span,
-                            call_scoped: false,
-                            address_of: false,
-                        })));
+                        return Some(Operand::reference(None, e.span));
                     }
                     [Arg {
                         name: None,
@@ -2170,12 +2151,7 @@ impl<'d> PouLowering<'d> {
                         // `ADR('text')` (B&R Automation Studio, CODESYS): the address of a
                         // hidden copy of the literal
                         let of = self.literal_copy(text, out)?;
-                        return Some(Operand::Ref(Box::new(il::RefOperand {
-                            of: Some(of),
-                            span: e.span,
-                            call_scoped: false,
-                            address_of: false,
-                        })));
+                        return Some(Operand::reference(Some(of), e.span));
                     }
                     [Arg {
                         name: None,
@@ -2197,12 +2173,7 @@ impl<'d> PouLowering<'d> {
                             .with_hint("declare a variable (or VAR CONSTANT) holding the value and take its address"),
                         );
                         self.poisoned = true;
-                        return Some(Operand::Ref(Box::new(il::RefOperand {
-                            of: None,
-                            span: e.span,
-                            call_scoped: false,
-                            address_of: false,
-                        })));
+                        return Some(Operand::reference(None, e.span));
                     }
                     _ => {
                         diags.push(
@@ -2215,12 +2186,7 @@ impl<'d> PouLowering<'d> {
                             .with_hint("write `REF(x)` or `ADR(x)` of a variable, an array element or a structure field"),
                         );
                         self.poisoned = true;
-                        return Some(Operand::Ref(Box::new(il::RefOperand {
-                            of: None,
-                            span: e.span,
-                            call_scoped: false,
-                            address_of: false,
-                        })));
+                        return Some(Operand::reference(None, e.span));
                     }
                 }
             }
@@ -2233,12 +2199,7 @@ impl<'d> PouLowering<'d> {
                 Some(TypeRef::Ref { .. }),
             ) => {
                 // `p := 0` (CODESYS, TwinCAT): NULL
-                return Some(Operand::Ref(Box::new(il::RefOperand {
-                    of: None,
-                    span: e.span,
-                    call_scoped: false,
-                    address_of: false,
-                })));
+                return Some(Operand::reference(None, e.span));
             }
             (
                 ExprKind::Place(p),
@@ -2299,38 +2260,17 @@ impl<'d> PouLowering<'d> {
             PlaceBase::Name(n) => n.clone(),
         };
         if p.accessors.is_empty() && base.is("NULL") && self.env().var_type(&base).is_none() {
-            return Some(Operand::Ref(Box::new(il::RefOperand {
-                of: None,
-                span: p.span,
-                call_scoped: false,
-                address_of: false,
-            })));
+            return Some(Operand::reference(None, p.span));
         }
-        let mut accessors = Vec::new();
         let derefs = self.implicit_derefs_of(p);
-        for (k, a) in p.accessors.iter().enumerate() {
-            if derefs.contains(&k) {
-                accessors.push(il::Accessor::Deref(p.span));
-            }
-            accessors.push(match a {
-                Accessor::Field(f) => il::Accessor::Field(f.clone()),
-                Accessor::Index(ix) => il::Accessor::Index(
-                    ix.iter()
-                        .map(|e| self.pure_operand(e))
-                        .collect::<Option<Vec<_>>>()?,
-                ),
-                Accessor::Deref(s) => il::Accessor::Deref(*s),
-                Accessor::Call { .. } => return None,
-            });
-        }
-        if derefs.contains(&p.accessors.len()) {
-            accessors.push(il::Accessor::Deref(p.span));
-        }
-        Some(Operand::Var(VarRef {
-            base,
-            accessors: accessors.into(),
-            span: p.span,
-        }))
+        Self::accessed_variable(base, p, &derefs, |a| match a {
+            Accessor::Index(ix) => Some(il::Accessor::Index(
+                ix.iter()
+                    .map(|e| self.pure_operand(e))
+                    .collect::<Option<Vec<_>>>()?,
+            )),
+            _ => None,
+        })
     }
 
     /// The positions among `p`'s accessors (its length: after the last) where a `REFERENCE TO`
@@ -2368,36 +2308,53 @@ impl<'d> PouLowering<'d> {
                 return Some(Operand::Address(a.clone()));
             }
         };
-        let mut accessors = Vec::new();
         let derefs = self.implicit_derefs_of(p);
+        Self::accessed_variable(base, p, &derefs, |a| match a {
+            Accessor::Index(ix) => {
+                let mut ops = Vec::new();
+                for e in ix {
+                    ops.push(self.operand(e, Some(&named("DINT", e.span)), out, diags));
+                }
+                Some(il::Accessor::Index(ops))
+            }
+            // every chain is taken apart before its statement is lowered (call_chain); one
+            // left here stands where no statement could run its calls first
+            Accessor::Call { span, .. } => {
+                diags.push(
+                    Diagnostic::error(
+                        code::E0349,
+                        "a method's result cannot be accessed here",
+                    )
+                    .at(*span)
+                    .with_hint("call the method in a statement before, store its result in a variable and access that"),
+                );
+                self.poisoned = true;
+                None
+            }
+            _ => None,
+        })
+    }
+
+    /// The variable `base` with the accessors of place `p` (its fields and `^` as written), a `^`
+    /// inserted before each accessor whose position is among `derefs` (its length: after the
+    /// last), where a `REFERENCE TO` leaves it out ([`Self::implicit_derefs_of`]); `computed`
+    /// lowers the accessors that need it, an index (`[i + 1]`) and a method's result (`.M()`), in
+    /// order: `None` when it gives none.
+    fn accessed_variable(
+        base: Ident,
+        p: &Place,
+        derefs: &[usize],
+        mut computed: impl FnMut(&Accessor) -> Option<il::Accessor>,
+    ) -> Option<Operand> {
+        let mut accessors = Vec::new();
         for (k, a) in p.accessors.iter().enumerate() {
             if derefs.contains(&k) {
                 accessors.push(il::Accessor::Deref(p.span));
             }
             accessors.push(match a {
                 Accessor::Field(f) => il::Accessor::Field(f.clone()),
-                Accessor::Index(ix) => {
-                    let mut ops = Vec::new();
-                    for e in ix {
-                        ops.push(self.operand(e, Some(&named("DINT", e.span)), out, diags));
-                    }
-                    il::Accessor::Index(ops)
-                }
                 Accessor::Deref(s) => il::Accessor::Deref(*s),
-                // every chain is taken apart before its statement is lowered (call_chain); one
-                // left here stands where no statement could run its calls first
-                Accessor::Call { span, .. } => {
-                    diags.push(
-                        Diagnostic::error(
-                            code::E0349,
-                            "a method's result cannot be accessed here",
-                        )
-                        .at(*span)
-                        .with_hint("call the method in a statement before, store its result in a variable and access that"),
-                    );
-                    self.poisoned = true;
-                    return None;
-                }
+                Accessor::Index(_) | Accessor::Call { .. } => computed(a)?,
             });
         }
         if derefs.contains(&p.accessors.len()) {
@@ -3064,12 +3021,7 @@ impl<'d> PouLowering<'d> {
             self.raw_refs = false;
             if let Some(r) = r {
                 out.push(ld(r, span));
-                let null = Operand::Ref(Box::new(il::RefOperand {
-                    of: None,
-                    span,
-                    call_scoped: false,
-                    address_of: false,
-                }));
+                let null = Operand::reference(None, span);
                 out.push(simple(Op::Ne, false, Some(null), span));
             }
             return;

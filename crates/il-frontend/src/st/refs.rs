@@ -408,15 +408,9 @@ impl RefTypes {
         for d in decls {
             let start = d.ty.span().start as usize;
             if let Some(target) = self.addresses.get(&start) {
-                let span = target.span;
-                d.init = Some(crate::ast::Initializer::Value(crate::ast::Operand::Ref(
-                    Box::new(crate::ast::RefOperand {
-                        of: Some(target.clone()),
-                        span,
-                        call_scoped: false,
-                        address_of: false,
-                    }),
-                )));
+                d.init = Some(crate::ast::Initializer::Value(
+                    crate::ast::Operand::reference(Some(target.clone()), target.span),
+                ));
             }
             self.wrap(&mut d.ty);
         }

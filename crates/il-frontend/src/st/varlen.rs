@@ -493,13 +493,7 @@ fn needs(env: &Env, s: &Stmt) -> bool {
             if let PlaceBase::Name(n) = &p.base {
                 found = found || own(env, &n.name).is_some();
             }
-            for a in &p.accessors {
-                match a {
-                    Accessor::Index(ix) => stack.extend(ix.iter()),
-                    Accessor::Call { args, .. } => stack.extend(args.iter().map(|a| &a.value)),
-                    _ => {}
-                }
-            }
+            stack.extend(p.accessor_exprs());
             continue;
         }
         let Some(e) = stack.pop() else {
