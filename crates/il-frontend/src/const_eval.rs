@@ -305,7 +305,7 @@ fn call(f: &str, args: &[ConstNum]) -> Result<ConstNum, String> {
 
 /// Whether [`call`] computes the function named `f` (its arguments are evaluated first only then:
 /// `LEN(x)` is reported as a call, not as `x`).
-fn computed(f: &str) -> bool {
+pub(crate) fn computed(f: &str) -> bool {
     const NAMES: [&str; 21] = [
         "SQRT", "LN", "LOG", "EXP", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "ATAN2", "EXPT",
         "ABS", "MIN", "MAX", "LIMIT", "TRUNC", "SHL", "SHR", "ROL", "ROR",

@@ -1024,7 +1024,9 @@ impl<'s> Ctx<'s> {
 
     /// An element of an array initialiser written as a constant expression at `l..r`: `N(7)`,
     /// where `N` is an integer constant declared before, is `N` repetitions of 7 (CODESYS and
-    /// TwinCAT name the count so); any other expression is one element (see [`Ctx::init_expr`]).
+    /// TwinCAT name the count so; a name that is neither such a constant nor a function ladderc
+    /// computes is a missing constant, E0022); any other expression is one element (see
+    /// [`Ctx::init_expr`]).
     pub fn array_element(&mut self, e: BoundExpr, l: usize, r: usize) -> ArrayInitElement {
         if let BoundExpr::Call(callee, args, _) = &e {
             if let ([BoundExpr::Name(of)], true) =
@@ -1041,10 +1043,20 @@ impl<'s> Ctx<'s> {
                 return self.address_array_element(of, address_of, l, r);
             }
         }
+        // `N(7)` where `N` is a constant or no standard function ladderc computes: IEC 61131-3's
+        // repetition; a count that names no constant of the files given (a list of another
+        // project, dgwoOstjfn/Mem1) is the one error (E0022, counted with the name's other uses)
+        // and the value one element, not a call
         let count = match &e {
             BoundExpr::Call(name, args, _) if args.len() == 1 => {
                 match self.consts.get(&name.name.to_ascii_uppercase()) {
-                    Some(ConstNum::Int(n)) => u32::try_from(*n).ok(),
+                    Some(ConstNum::Int(n)) => Some(u32::try_from(*n).ok()),
+                    _ if !crate::const_eval::computed(&name.name) => {
+                        let nl = (name.span.start as usize).saturating_sub(self.base);
+                        let nr = (name.span.end as usize).saturating_sub(self.base);
+                        let n = self.const_expr(BoundExpr::Name(name.clone()), nl, nr, true);
+                        Some(n.and_then(|n| u32::try_from(n).ok()))
+                    }
                     _ => None,
                 }
             }
@@ -1056,7 +1068,7 @@ impl<'s> Ctx<'s> {
                     BoundExpr::Call(_, args, _) => args.pop(),
                     _ => None,
                 };
-                (Some(n), arg.unwrap_or(BoundExpr::Int(0, self.span(l, r))))
+                (n, arg.unwrap_or(BoundExpr::Int(0, self.span(l, r))))
             }
             (None, e) => (None, e),
         };
@@ -1175,7 +1187,7 @@ impl<'s> Ctx<'s> {
                 } else if integers {
                     "use integer literals and integer constants (VAR CONSTANT or VAR_GLOBAL CONSTANT with an integer value, declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type"
                 } else {
-                    "use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, parentheses and SIZEOF(T) of a data type"
+                    "use literals (numbers, T#... durations) and constants (VAR CONSTANT or VAR_GLOBAL CONSTANT declared before in this file, or a VAR_GLOBAL CONSTANT list of another file given with it) with + - * / MOD, AND OR XOR of integers, parentheses and SIZEOF(T) of a data type"
                 };
                 self.hint(
                     code::E0022,

@@ -572,7 +572,16 @@ fn scan_tokens(src: &str, toks: &[Token]) -> (Vec<PouText>, Vec<usize>) {
                             }
                             i
                         };
-                        i = name_end(i + 2);
+                        // `FUNCTION_BLOCK FB_T EXTENDS` then `VAR_INPUT` (the base's name left out,
+                        // PeterZerlauth/Tc3_Component): the clause is the keyword alone, the VAR
+                        // block stays a VAR block, and `inherit` says the name is missing
+                        let named = toks.get(i + 1).is_some_and(|t| {
+                            t.tok == Tok::Ident
+                                && !is_var_keyword(&word(src, t).to_ascii_uppercase())
+                                && !is_word(src, t, &end_word)
+                                && !clause(i + 1)
+                        });
+                        i = if named { name_end(i + 2) } else { i + 1 };
                         while toks.get(i).is_some_and(|t| t.tok == Tok::Comma) {
                             i = name_end(i + 2);
                         }

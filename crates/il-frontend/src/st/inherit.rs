@@ -75,10 +75,23 @@ fn clause_names(file: FileId, src: &str, range: &Range<usize>) -> (Vec<Ident>, V
     let (mut extends, mut implements): (Vec<Ident>, Vec<Ident>) = (Vec::new(), Vec::new());
     let mut into_implements = false;
     let mut after_dot = false;
-    for t in &toks {
+    for (k, t) in toks.iter().enumerate() {
         let w = text.get(t.range.clone()).unwrap_or("");
         if w.eq_ignore_ascii_case("EXTENDS") {
             into_implements = false;
+            // `EXTENDS` with no name after it (the clause ends there, `file`): a base without a
+            // name, at the keyword, which `chain_of` reports as missing
+            if toks.get(k + 1).is_none_or(|n| {
+                n.tok != Tok::Ident
+                    || text
+                        .get(n.range.clone())
+                        .is_some_and(|x| x.eq_ignore_ascii_case("IMPLEMENTS"))
+            }) {
+                extends.push(Ident::new(
+                    "",
+                    Span::new(file, range.start + t.range.start, range.start + t.range.end),
+                ));
+            }
         } else if w.eq_ignore_ascii_case("IMPLEMENTS") {
             into_implements = true;
         } else if t.tok == Tok::Ident {
@@ -671,6 +684,21 @@ fn chain_of(
         let own = cur.name.key() == key;
         let Some(b) = classes.get(&bkey) else {
             if own {
+                if base.name.is_empty() {
+                    diags.push(
+                        Diagnostic::error(
+                            code::E0330,
+                            format!(
+                                "`{}` EXTENDS nothing: the name of the base block is missing after EXTENDS",
+                                cur.name.name
+                            ),
+                        )
+                        .at(base.span)
+                        .with_primary_label("base block's name missing")
+                        .with_hint("write the name of the FUNCTION_BLOCK it extends after EXTENDS, or remove EXTENDS"),
+                    );
+                    return None;
+                }
                 let what = if interfaces.contains_key(&bkey) {
                     "is an INTERFACE, which a function block implements (IMPLEMENTS), not extends"
                 } else if other_pous.contains(&bkey) {

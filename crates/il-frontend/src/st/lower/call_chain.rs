@@ -322,6 +322,9 @@ impl PouLowering<'_> {
     /// TO`, `T := a.Child;` otherwise; the property's getter runs there) and `callee` becomes
     /// `T.Kid`.
     pub(super) fn property_holder(&mut self, callee: &mut Place, calls: &mut Vec<Stmt>) {
+        if self.own_property_holder(callee, calls) {
+            return;
+        }
         let n = callee.accessors.len();
         if n < 2 {
             return;
@@ -404,6 +407,74 @@ impl PouLowering<'_> {
         callee.accessors = rest;
     }
 
+    /// `P_Log.M_Add('x')` (or `P^.Kid`) inside the block that declares or inherits the PROPERTY
+    /// `P_Log`, where no variable has that name: as `inst.P_Log.M_Add` from outside
+    /// ([`Self::property_holder`]), the property's value into a temporary first (its getter runs
+    /// there) and `callee` becomes `T.M_Add`. Beckhoff infosys "Property"
+    /// (infosys.beckhoff.com/content/1033/tc3_plc_intro/2530307467.html): inside the block a
+    /// property is named without a prefix, as `THIS^.P_Log` is. Whether it did so.
+    fn own_property_holder(&mut self, callee: &mut Place, calls: &mut Vec<Stmt>) -> bool {
+        let PlaceBase::Name(prop) = &callee.base else {
+            return false;
+        };
+        let get = super::super::property::getter(&prop.name);
+        let deref = matches!(callee.accessors.first(), Some(Accessor::Deref(_)));
+        if callee.accessors.len() <= usize::from(deref)
+            || !self.methods.contains_key(&get)
+            || self.env().vars.contains_key(&prop.key())
+        {
+            return false;
+        }
+        let result = Ident::new(crate::actions::method_result(&get), prop.span);
+        let Some(ty) = self.env().var_type(&result) else {
+            return false;
+        };
+        let env = self.env();
+        let resolved = env.resolve(&ty);
+        let through = match resolved {
+            TypeRef::Ref { .. } => true,
+            // a block instance or an interface reference: its method is called on it
+            TypeRef::Named(_) => !deref,
+            _ => false,
+        };
+        if !through {
+            return false;
+        }
+        let span = prop.span;
+        let holder = name_place(prop.clone());
+        let read = Expr {
+            span,
+            kind: ExprKind::Place(holder),
+        };
+        let value = if matches!(
+            ty,
+            TypeRef::Ref {
+                kind: RefKind::Reference,
+                ..
+            }
+        ) {
+            Expr {
+                span,
+                kind: ExprKind::Call {
+                    name: Ident::new(REF_ASSIGN, span),
+                    args: vec![Arg {
+                        name: None,
+                        dir: super::super::ast::ArgDir::Input,
+                        span,
+                        value: read,
+                    }],
+                },
+            }
+        } else {
+            read
+        };
+        let t = self.temp(ty, span);
+        calls.push(assign(name_place(t.clone()), value, span));
+        // (`T^.Kid` when a `^` follows the property: `T` holds the pointer)
+        callee.base = PlaceBase::Name(t);
+        true
+    }
+
     /// `a.Child.Depth(args);` as the parser puts it before the statement reading its result
     /// `a.Child.__M_DEPTH`, where `Child` is a PROPERTY: the property's value into a temporary,
     /// the call on it, and its result copied into another, which [`Self::read_property_results`]
@@ -413,7 +484,7 @@ impl PouLowering<'_> {
         let StmtKind::Call { callee, args } = &s.kind else {
             return None;
         };
-        if is_chain(callee) || callee.accessors.len() < 2 {
+        if is_chain(callee) || callee.accessors.is_empty() {
             return None;
         }
         let key = super::method_flow::deref_key(callee)?;
