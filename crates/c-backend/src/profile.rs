@@ -145,6 +145,20 @@ pub struct TargetProfile {
     /// default is IEC's final scan (`--profile openplc`: Beremiz's, none).
     #[serde(default)]
     pub sfc_action_control: SfcActionControl,
+    /// The length in characters of a `STRING` or `WSTRING` declared without one (IEC 61131-3 ed. 3
+    /// leaves it to the implementation). Optional in a profile file; the default is 80, as CODESYS
+    /// and TwinCAT ("If no size is specified, 80 bytes are reserved by default", TwinCAT 3 manual,
+    /// STRING); `--profile openplc`: 126, matiec's `STR_MAX_LEN`. At most 254, the capacity of every
+    /// `IEC_STRING`.
+    #[serde(default = "default_string_length")]
+    pub default_string_length: u32,
+}
+
+/// The default `default_string_length`: 80 characters, as CODESYS and TwinCAT.
+pub const DEFAULT_STRING_LENGTH: u32 = 80;
+
+fn default_string_length() -> u32 {
+    DEFAULT_STRING_LENGTH
 }
 
 /// The default `data_bytes`: 16 MiB.
@@ -190,6 +204,7 @@ impl Default for TargetProfile {
             data_bytes: DEFAULT_DATA_BYTES,
             time_number_unit: TimeNumberUnit::Milliseconds,
             sfc_action_control: SfcActionControl::Iec,
+            default_string_length: DEFAULT_STRING_LENGTH,
         })
     }
 }
@@ -305,6 +320,12 @@ impl TargetProfile {
         }
         if self.data_bytes == 0 {
             return bad("data_bytes must be at least 1".into());
+        }
+        if !(1..=254).contains(&self.default_string_length) {
+            return bad(format!(
+                "default_string_length must be between 1 and 254 (the capacity of every STRING), got {}",
+                self.default_string_length
+            ));
         }
         if self.name.is_empty() {
             return bad("name must not be empty".into());

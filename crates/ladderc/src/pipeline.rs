@@ -1392,6 +1392,9 @@ impl Session {
             Some(p) => self.profile(p)?,
             None => c_backend::TargetProfile::default(),
         };
+        // the length of a STRING declared without one: the profile's for the whole compilation (the
+        // readers, sema and the C backend read it from the types); every compilation sets it here
+        il_frontend::sema::set_default_string_len(profile.default_string_length);
         let mut library = Library::builtin(&mut self.map, &mut self.diags);
         if let Some(dir) = &opts.templates {
             // Checks every user template in full (body tokens and names; its function compiled alone

@@ -1977,11 +1977,11 @@ fn string_generic(f: &StdFunction, t: Type, known: &[(Type, Span)]) -> Type {
     let len = if f.name == "CONCAT" {
         lens.sum::<u32>()
     } else {
-        lens.max().unwrap_or(DEFAULT_STRING_LEN)
+        lens.max().unwrap_or_else(default_string_len)
     };
     Type::String {
         wide,
-        len: len.clamp(1, DEFAULT_STRING_LEN),
+        len: len.clamp(1, STRING_CAPACITY),
     }
 }
 

@@ -683,10 +683,15 @@ impl Analyzer<'_> {
                 Type::Error => Type::Error,
                 t => Type::Ref(Box::new(t)),
             },
-            TypeRef::String { wide, length, .. } => Type::String {
-                wide: *wide,
-                len: length.unwrap_or(DEFAULT_STRING_LEN),
-            },
+            TypeRef::String { wide, length, span } => {
+                if let Some(n) = length.filter(|n| *n > STRING_CAPACITY) {
+                    self.warn_string_beyond_capacity(*wide, n, *span);
+                }
+                Type::String {
+                    wide: *wide,
+                    len: length.unwrap_or_else(default_string_len),
+                }
+            }
             TypeRef::Array {
                 dims,
                 element,
@@ -813,6 +818,28 @@ impl Analyzer<'_> {
         }
     }
 
+    /// W1468 at a `STRING(n)`/`WSTRING(n)` declared longer than the 254 characters every string holds
+    /// (README, memory model: an `IEC_STRING` of 258 bytes); once per declaration. TwinCAT accepts
+    /// `STRING(511)` and more ("TwinCAT does not limit the string length in principle", TwinCAT 3
+    /// manual, STRING); IEC 61131-3 ed. 3 leaves the maximum length to the implementation.
+    fn warn_string_beyond_capacity(&mut self, wide: bool, declared: u32, span: crate::Span) {
+        if self.silent || !self.long_strings_at.insert((span.file, span.start)) {
+            return;
+        }
+        let kw = if wide { "WSTRING" } else { "STRING" };
+        self.warning(
+            code::W1468,
+            span,
+            format!(
+                "`{kw}({declared})` holds at most {STRING_CAPACITY} characters in ladderc, not {declared}"
+            ),
+        )
+        .label(format!("every {kw} holds {STRING_CAPACITY} characters; longer values are cut"))
+        .hint(format!(
+            "keep the texts to {STRING_CAPACITY} characters, or split them over several variables (README, memory model)"
+        ));
+    }
+
     fn resolve_named_type(&mut self, n: &ast::Ident) -> Type {
         if let Some(e) = Elementary::from_name(&n.name) {
             return Type::Elementary(e);
@@ -820,7 +847,7 @@ impl Analyzer<'_> {
         if n.is("STRING") || n.is("WSTRING") {
             return Type::String {
                 wide: n.is("WSTRING"),
-                len: DEFAULT_STRING_LEN,
+                len: default_string_len(),
             };
         }
         if let Some(&id) = self.type_names.get(&n.key()) {

@@ -135,6 +135,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         internal_accessed: std::collections::HashSet::new(),
         operator_functions: [None; 32],
         wide_chars_at: std::collections::HashSet::new(),
+        long_strings_at: std::collections::HashSet::new(),
         reinterpreting_pous: std::collections::HashSet::new(),
         declaring_fields: false,
         keyword_parameters: units
@@ -229,6 +230,9 @@ pub(crate) struct Analyzer<'d> {
     /// Where W1416 (a STRING literal with a character beyond U+00FF) was reported (file, start): a
     /// literal read twice (an ST statement lowered to several IL instructions) is reported once.
     pub(crate) wide_chars_at: std::collections::HashSet<(crate::FileId, u32)>,
+    /// Where W1468 (a `STRING(n)` longer than the 254-character capacity) was reported (file, start):
+    /// a declaration's type resolved twice is reported once.
+    pub(crate) long_strings_at: std::collections::HashSet<(crate::FileId, u32)>,
     /// The POUs where W1425 (a pointer stored into a pointer to another type) was reported: once
     /// per POU.
     pub(crate) reinterpreting_pous: std::collections::HashSet<PouId>,

@@ -506,7 +506,8 @@ pub enum FbType {
 pub enum Type {
     /// `BOOL`, `INT`, `TIME` ...
     Elementary(Elementary),
-    /// `STRING[len]` / `WSTRING[len]`; an unsized declaration has `len` 254 (the IEC default).
+    /// `STRING[len]` / `WSTRING[len]`; an unsized declaration has the target profile's default
+    /// `len` ([`default_string_len`]: 80 unless the profile says otherwise).
     String {
         /// `WSTRING` (UTF-16) rather than `STRING` (bytes).
         wide: bool,
@@ -652,8 +653,31 @@ impl Dim {
     }
 }
 
-/// The default length of an unsized `STRING`.
-pub const DEFAULT_STRING_LEN: u32 = 254;
+/// The capacity of every `STRING` and `WSTRING` in characters (the C runtime's `IEC_STRING` of 258
+/// bytes, `IEC_WSTRING` of 512): a declared length is held up to it.
+pub const STRING_CAPACITY: u32 = 254;
+
+/// The default length of an unsized `STRING` when no target profile set one (80, as CODESYS and
+/// TwinCAT).
+pub const DEFAULT_STRING_LEN: u32 = 80;
+
+thread_local! {
+    /// The length of a `STRING`/`WSTRING` declared without one, set by [`set_default_string_len`]:
+    /// the target profile's `default_string_length` (IEC 61131-3 ed. 3 leaves it to the
+    /// implementation).
+    static DEFAULT_STRING_LEN_NOW: std::cell::Cell<u32> = const { std::cell::Cell::new(DEFAULT_STRING_LEN) };
+}
+
+/// Sets the length of a `STRING`/`WSTRING` declared without one (the target profile's; cut to
+/// 1..=[`STRING_CAPACITY`]); returns the one set before.
+pub fn set_default_string_len(len: u32) -> u32 {
+    DEFAULT_STRING_LEN_NOW.with(|d| d.replace(len.clamp(1, STRING_CAPACITY)))
+}
+
+/// The length of a `STRING`/`WSTRING` declared without one (see [`set_default_string_len`]).
+pub fn default_string_len() -> u32 {
+    DEFAULT_STRING_LEN_NOW.with(std::cell::Cell::get)
+}
 
 impl Type {
     /// `BOOL`, i.e. `Type::Elementary(Elementary::Bool)`.
@@ -1796,7 +1820,7 @@ impl Model {
         if name.eq_ignore_ascii_case("STRING") || name.eq_ignore_ascii_case("WSTRING") {
             return Some(Type::String {
                 wide: name.eq_ignore_ascii_case("WSTRING"),
-                len: DEFAULT_STRING_LEN,
+                len: default_string_len(),
             });
         }
         if let Some(id) = self.type_by_name(name) {
@@ -1899,7 +1923,7 @@ impl Model {
             Type::Elementary(e) => e.name().to_string(),
             Type::String { wide, len } => {
                 let kw = if *wide { "WSTRING" } else { "STRING" };
-                if *len == DEFAULT_STRING_LEN {
+                if *len == default_string_len() {
                     kw.to_string()
                 } else {
                     format!("{kw}[{len}]")

@@ -615,11 +615,11 @@ fn conv_type(name: &str) -> Option<Type> {
     match name {
         "STRING" => Some(Type::String {
             wide: false,
-            len: super::model::DEFAULT_STRING_LEN,
+            len: super::model::default_string_len(),
         }),
         "WSTRING" => Some(Type::String {
             wide: true,
-            len: super::model::DEFAULT_STRING_LEN,
+            len: super::model::default_string_len(),
         }),
         n => Elementary::from_name(n).map(Type::Elementary),
     }

@@ -632,7 +632,19 @@ impl Env<'_> {
                             }
                         }
                     }
-                    t
+                    // a string function's result (CONCAT, LEFT, ...) is as long as the runtime
+                    // holds: a temporary holding it cuts nothing (the store into a variable cuts to
+                    // its declared length), whatever the default length of its inputs' type
+                    match t {
+                        Ty::Known(TypeRef::String { wide, span, .. }) => {
+                            Ty::Known(TypeRef::String {
+                                wide,
+                                length: Some(crate::sema::model::STRING_CAPACITY),
+                                span,
+                            })
+                        }
+                        t => t,
+                    }
                 }
             };
         }
