@@ -7,7 +7,8 @@
 //! whose body runs `_INIT`'s statements in its first cycle (behind a hidden flag), then
 //! `_CYCLIC`'s; `_EXIT`'s are dropped (a run never stops); one note W0020 per program.
 //! Invariants: only `.var` files of the program's own folder become its variables (a project's
-//! `Global.var` stays global); a folder whose name makes no identifier is named as
+//! `Global.var` stays global), and they do so before the parts' statements are compiled
+//! ([`own_variables`]), so no program's statements see another program's `.var` names; a folder whose name makes no identifier is named as
 //! [`il_frontend::implicit_program_name`] makes one; labels and flags added start with `__`.
 
 use diagnostics::{code, Diagnostic, Diagnostics, Severity, SourceMap};
@@ -20,6 +21,122 @@ use std::path::{Path, PathBuf};
 
 /// The B&R program parts.
 const PARTS: [&str; 3] = ["_INIT", "_CYCLIC", "_EXIT"];
+
+/// Whether `file` is a `.var` file (B&R's variable declarations).
+fn is_var_file(map: &SourceMap, file: diagnostics::FileId) -> bool {
+    Path::new(&map.get(file).name)
+        .extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case("var"))
+}
+
+/// Makes each program folder's `.var` blocks the VAR blocks of every program part of the folder
+/// (`_INIT`, `_CYCLIC`, `_EXIT`), before the parts' statements are compiled: Automation Studio
+/// keeps a program's `Variables.var` to that program (`Private="true"` in its `IEC.prg`), so a
+/// name the part uses is its own program's variable whatever another program declares (round 34,
+/// before: the `.var` blocks were global until [`join`], and a part's `i := 7` was typed by
+/// another program's `i : REAL`, E1006 or not depending on the order of the files). A folder with
+/// two parts of one kind keeps its `.var` blocks global (the checks' E1002 names the parts). A
+/// variable named like one of the program's actions in another case (`PACK_ML` and the action
+/// `Pack_ML`: two names in case-sensitive Automation Studio, one under IEC 61131-3) stays global,
+/// as before round 34, so that the action and the variable both keep working.
+pub fn own_variables(
+    units: &mut [CompilationUnit],
+    pending: &[il_frontend::st::file::PendingBody],
+    map: &SourceMap,
+) {
+    let mut folders_of: HashMap<diagnostics::FileId, PathBuf> = HashMap::new();
+    let mut dir_of = |file: diagnostics::FileId| -> PathBuf {
+        folders_of
+            .entry(file)
+            .or_insert_with(|| {
+                let name = Path::new(&map.get(file).name);
+                let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
+                path.parent().unwrap_or(Path::new("")).to_path_buf()
+            })
+            .clone()
+    };
+    // the parts by folder: (unit, item, part)
+    let mut folders: BTreeMap<PathBuf, Vec<(usize, usize, usize)>> = BTreeMap::new();
+    for (u, unit) in units.iter().enumerate() {
+        for (i, item) in unit.items.iter().enumerate() {
+            if let LibraryElement::Pou(p) = item {
+                if let (PouKind::Program, Some(k)) = (
+                    p.kind,
+                    PARTS
+                        .iter()
+                        .position(|n| p.name.name.eq_ignore_ascii_case(n)),
+                ) {
+                    folders
+                        .entry(dir_of(p.name.span.file))
+                        .or_default()
+                        .push((u, i, k));
+                }
+            }
+        }
+    }
+    folders.retain(|_, parts| {
+        (0..PARTS.len()).all(|k| parts.iter().filter(|p| p.2 == k).count() <= 1)
+    });
+    if folders.is_empty() {
+        return;
+    }
+    // the actions of each folder's parts (their files are in the folder)
+    let mut actions: HashMap<PathBuf, Vec<&Ident>> = HashMap::new();
+    for pb in pending {
+        let dir = dir_of(pb.file);
+        if folders.contains_key(&dir) {
+            actions
+                .entry(dir)
+                .or_default()
+                .extend(pb.actions.iter().map(|a| &a.0));
+        }
+    }
+    // the folders' `.var` blocks, taken out of the global lists
+    let mut blocks: BTreeMap<PathBuf, Vec<VarBlock>> = BTreeMap::new();
+    for unit in units.iter_mut() {
+        unit.items.retain_mut(|item| {
+            let LibraryElement::GlobalVars(b) = item else {
+                return true;
+            };
+            if !is_var_file(map, b.span.file) {
+                return true;
+            }
+            let dir = dir_of(b.span.file);
+            if !folders.contains_key(&dir) {
+                return true;
+            }
+            let case_twin = |v: &VarDecl| {
+                actions.get(&dir).is_some_and(|acts| {
+                    acts.iter()
+                        .any(|a| a.key() == v.name.key() && a.name != v.name.name)
+                })
+            };
+            let (global, own): (Vec<VarDecl>, Vec<VarDecl>) =
+                b.vars.iter().cloned().partition(case_twin);
+            blocks.entry(dir).or_default().push(VarBlock {
+                access: None,
+                name: None,
+                kind: VarKind::Local,
+                vars: own,
+                ..b.clone()
+            });
+            b.vars = global;
+            !b.vars.is_empty()
+        });
+    }
+    for (dir, parts) in folders {
+        let Some(own) = blocks.get(&dir) else {
+            continue;
+        };
+        for (u, i, _) in parts {
+            if let Some(LibraryElement::Pou(p)) = units[u].items.get_mut(i) {
+                let mut vars = own.clone();
+                vars.append(&mut p.var_blocks);
+                p.var_blocks = vars;
+            }
+        }
+    }
+}
 
 /// Joins each folder's program parts and variables (see the module header).
 pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnostics) {
@@ -95,31 +212,6 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
         } else {
             shown.clone()
         };
-        // the folder's `.var` blocks: the program's own variables
-        let mut blocks = Vec::new();
-        for unit in units.iter_mut() {
-            unit.items.retain_mut(|item| {
-                let LibraryElement::GlobalVars(b) = item else {
-                    return true;
-                };
-                let file = b.span.file;
-                let path = Path::new(&map.get(file).name);
-                let is_var = path
-                    .extension()
-                    .is_some_and(|e| e.eq_ignore_ascii_case("var"));
-                if !is_var || dir_of(file) != dir {
-                    return true;
-                }
-                own_files.push(file);
-                blocks.push(VarBlock {
-                    access: None,
-                    name: None,
-                    kind: VarKind::Local,
-                    ..b.clone()
-                });
-                false
-            });
-        }
         made.push((name.clone(), dir.clone()));
         let init = part(0).and_then(|(u, i)| pou_at(units, u, i).cloned());
         let Some(LibraryElement::Pou(p)) = units[host.0].items.get_mut(host.1) else {
@@ -136,9 +228,13 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
             .with_hint("as Automation Studio builds a program of a folder; _EXIT does not run (a run has no stop)"),
         );
         p.name = Ident::new(&name, at);
-        let mut own = blocks;
-        own.append(&mut p.var_blocks);
-        p.var_blocks = own;
+        // the folder's `.var` blocks, made the parts' own by `own_variables`
+        own_files.extend(
+            p.var_blocks
+                .iter()
+                .map(|b| b.span.file)
+                .filter(|&f| is_var_file(map, f)),
+        );
         let cyclic_is_host = part(1).is_some();
         if let Some(init) = init {
             let flag = Ident::new("__BR_INIT_DONE", at);
@@ -154,7 +250,13 @@ pub fn join(units: &mut [CompilationUnit], map: &SourceMap, diags: &mut Diagnost
                 at,
             ));
             if cyclic_is_host {
-                p.var_blocks.extend(init.var_blocks.iter().cloned());
+                // (the folder's `.var` blocks: the host has its own copy)
+                p.var_blocks.extend(
+                    init.var_blocks
+                        .iter()
+                        .filter(|b| !is_var_file(map, b.span.file))
+                        .cloned(),
+                );
             }
             let flag_ref = VarRef {
                 base: flag,
@@ -398,87 +500,6 @@ fn drop_codeless_programs(
     }
 }
 
-/// The data types two or more B&R program folders (each holds `IEC.prg`) declare alike in their
-/// `.typ` files (`Private="true"`, Automation Studio's "Local data types": each program sees its
-/// own): the same declaration written in each folder (a program copied to another folder), kept
-/// once, as it means the same in every program (before round 25: E1002 "declared twice").
-/// Declarations of one name that differ stay the checks' E1002 (ladderc keeps one namespace of
-/// types). Runs before the bodies are compiled.
-pub fn share_private_types(units: &mut [CompilationUnit], map: &SourceMap) {
-    let dir = |file: diagnostics::FileId| -> Option<PathBuf> {
-        let name = Path::new(&map.get(file).name);
-        if !name
-            .extension()
-            .is_some_and(|e| e.eq_ignore_ascii_case("typ"))
-        {
-            return None;
-        }
-        let path = std::fs::canonicalize(name).unwrap_or_else(|_| name.to_path_buf());
-        let dir = path.parent()?.to_path_buf();
-        is_program_folder(&dir).then_some(dir)
-    };
-    // the declaration without its places, to compare two of them
-    fn shape(t: &il_frontend::ast::TypeDecl) -> serde_json::Value {
-        fn strip(v: &mut serde_json::Value) {
-            match v {
-                serde_json::Value::Object(m) => {
-                    m.remove("span");
-                    m.values_mut().for_each(strip);
-                }
-                serde_json::Value::Array(a) => a.iter_mut().for_each(strip),
-                _ => {}
-            }
-        }
-        let mut v = serde_json::to_value(t).unwrap_or_default();
-        strip(&mut v);
-        v
-    }
-    // by upper-case name: (folder, unit, item, index in the item, shape)
-    type Seen = Vec<(PathBuf, usize, usize, usize, serde_json::Value)>;
-    let mut by_name: BTreeMap<String, Seen> = BTreeMap::new();
-    for (u, unit) in units.iter().enumerate() {
-        for (i, item) in unit.items.iter().enumerate() {
-            let LibraryElement::DataTypes(types) = item else {
-                continue;
-            };
-            for (k, t) in types.iter().enumerate() {
-                if let Some(d) = dir(t.name.span.file) {
-                    by_name
-                        .entry(t.name.key())
-                        .or_default()
-                        .push((d, u, i, k, shape(t)));
-                }
-            }
-        }
-    }
-    let mut drop: Vec<(usize, usize, usize)> = Vec::new();
-    for seen in by_name.values() {
-        let Some((first_dir, .., first)) = seen.first() else {
-            continue;
-        };
-        let alike = seen[1..]
-            .iter()
-            .all(|(d, .., s)| d != first_dir && s == first);
-        let folders: std::collections::BTreeSet<&PathBuf> = seen.iter().map(|s| &s.0).collect();
-        if seen.len() > 1 && alike && folders.len() == seen.len() {
-            drop.extend(seen[1..].iter().map(|&(_, u, i, k, _)| (u, i, k)));
-        }
-    }
-    drop.sort();
-    for &(u, i, k) in drop.iter().rev() {
-        if let Some(LibraryElement::DataTypes(types)) = units[u].items.get_mut(i) {
-            types.remove(k);
-        }
-    }
-    let mut items: Vec<(usize, usize)> = drop.iter().map(|&(u, i, _)| (u, i)).collect();
-    items.dedup();
-    for &(u, i) in items.iter().rev() {
-        if matches!(units[u].items.get(i), Some(LibraryElement::DataTypes(t)) if t.is_empty()) {
-            units[u].items.remove(i);
-        }
-    }
-}
-
 /// A B&R program folder's actions file (`Actions.st`: `ACTION Name : ... END_ACTION`, no POU):
 /// its actions become those of the folder's `_INIT`, `_CYCLIC` and `_EXIT` parts (inlined where
 /// they call them, before [`join`] makes one program of the parts); so are those of an actions file
@@ -625,7 +646,7 @@ fn lists_package(dir: &Path, sub: &Path) -> bool {
 
 /// Whether `dir` is a B&R program folder: it holds `IEC.prg` (a program in IEC languages) or
 /// `ANSIC.prg` (a program in C or C++, round 27: its `.var` files are as private to it).
-fn is_program_folder(dir: &Path) -> bool {
+pub(crate) fn is_program_folder(dir: &Path) -> bool {
     ["IEC.prg", "ANSIC.prg"]
         .iter()
         .any(|n| dir.join(n).is_file())

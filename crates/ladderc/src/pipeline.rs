@@ -915,8 +915,13 @@ impl Session {
         }
         // B&R: a program folder's actions file belongs to the folder's program parts
         crate::br_programs::attach_actions(&units, &mut pending, &self.map);
-        // B&R: one type declared alike in several programs' private `.typ` files is kept once
-        crate::br_programs::share_private_types(&mut units, &self.map);
+        // B&R: a program folder's `.var` variables are its parts' own, before their bodies compile
+        crate::br_programs::own_variables(&mut units, &pending, &self.map);
+        // B&R: a `.typ` structure's fields that differ in case only (case-sensitive Automation Studio)
+        crate::br_case_fields::keep_first_of_case_twins(&mut units, &self.map, &mut self.diags);
+        // B&R: a program's private `.typ` types whose names other declarations take too are its
+        // own (alike or not: each program its own copy)
+        crate::br_private_types::scope_private_types(&mut units, &self.map);
         // B&R: a block declared in a `.fun` file and implemented in a `.st` one is one block
         let fun_files: Vec<diagnostics::FileId> = self
             .map

@@ -134,6 +134,23 @@ impl Body<'_, '_> {
 
     /// The implicit (inline) enumerations the variables of the POU being checked are of (also as
     /// array elements; an inherited variable and a method's hidden ones are the POU's variables).
+    /// Whether type `name` is a B&R program's private type (`Conveyor.MachineStateEnum`, named so
+    /// by ladderc's B&R reader: a `.typ` file in a program folder, whose name another declaration
+    /// also takes) of a program other than the current POU: its values are not seen here, as
+    /// Automation Studio keeps a program's local data types to it (round 34).
+    fn private_to_another_program(&self, name: &str) -> bool {
+        let Some((program, _)) = name.split_once('.') else {
+            return false;
+        };
+        let own = self.pou().name.as_str();
+        let own = own.strip_suffix(crate::BR_PROGRAM_SUFFIX).unwrap_or(own);
+        !program.eq_ignore_ascii_case(own)
+            && self.a.pou_names.keys().any(|k| {
+                k.strip_suffix(crate::BR_PROGRAM_SUFFIX).unwrap_or(k)
+                    == program.to_ascii_uppercase()
+            })
+    }
+
     fn own_implicit_enums(&self) -> Vec<TypeId> {
         fn enum_of(t: &Type) -> Option<TypeId> {
             match t {
@@ -829,7 +846,7 @@ impl Body<'_, '_> {
                             let n = &self.a.model.types[id.0 as usize].name;
                             let implicit = n.starts_with("__ENUM_")
                                 || crate::st::implicit_enums::is_implicit(n);
-                            !implicit || own.contains(id)
+                            (!implicit || own.contains(id)) && !self.private_to_another_program(n)
                         })
                         .collect();
                     if !visible.is_empty() && visible.len() < found.len() {
