@@ -83,6 +83,7 @@ pub mod lsp;
 pub mod motion_in_struct;
 pub mod motion_link;
 pub mod nc_axes;
+pub mod no_program;
 pub mod openplc_v4;
 pub mod openplc_v4_json;
 pub mod openplc_v4_ld;

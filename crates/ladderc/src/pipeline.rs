@@ -624,6 +624,14 @@ impl Session {
             if v23_export {
                 self.codesys_files.push(file);
             }
+            // detected as IL, but no line is an instruction or a declaration (a register list
+            // kept as `.txt`): one E1107, not an error a line (`no_program`)
+            if detected && !v23_export && file_lang == Lang::Il {
+                if let Some(d) = crate::no_program::check(file, src) {
+                    self.diags.push(d);
+                    continue;
+                }
+            }
             if detected && !v23_export && openplc_v4_json_body(src).is_none() {
                 // an IEC 61131-10 XML file is no PLCopen XML: the note says what the E3002 after
                 // it says (ladderc does not read that format)

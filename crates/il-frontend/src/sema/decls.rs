@@ -1811,6 +1811,10 @@ impl Analyzer<'_> {
                 _ => Some(ConstValue::Int(n)),
             };
         }
+        // an integer for an enumeration without {attribute 'strict'}: `loose_enum`
+        if let Some(v) = self.integer_initial_value(op, ty, consts) {
+            return v;
+        }
         match op {
             Operand::Literal(lit) => {
                 self.check_single_byte(lit);

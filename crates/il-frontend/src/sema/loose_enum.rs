@@ -11,15 +11,27 @@
 //! storing into the enumeration only). Beside an integer or a real that holds every value the
 //! enumerated value counts as that type (`u = E.a` of a UINT).
 //!
-//! Input: the types an assignment, an input or a generic function (comparison, arithmetic) sees.
-//! Output: whether they meet through the enumeration's number, and W1439 once per POU. Invariant:
+//! An integer initial value of a loose enumeration (`Kind : ActionEnum := 0;`, B&R's own
+//! `MpAlarmX.typ`: `Type : MpAlarmXActionEnum := 0;`) is taken as the assignment `e := 0;` is (before
+//! issue #13's round 34 it was E1025 while the assignment was W1439): the value of that number, or
+//! the number itself when no value has it (CODESYS and TwinCAT hold a non-strict enumeration as
+//! its integer base type; Automation Studio compiles its libraries' such initial values), with
+//! one W1439 per enumeration; a strict enumeration's stays E1025 (`decls`).
+//!
+//! Input: the types an assignment, an input or a generic function (comparison, arithmetic) sees,
+//! or an initial value and its declared type.
+//! Output: whether they meet through the enumeration's number, and W1439 once per POU (once per
+//! enumeration for initial values). Invariant:
 //! an enumerated value is held as a DINT (c-backend), so an integer is stored into a loose
 //! enumeration only where it widens to DINT, and a value leaves it only into an integer that holds
 //! every value declared.
 
 use super::body::Body;
-use super::model::{Elementary, Model, Type, UserTypeDef};
-use super::typing::widens;
+use super::decls::Consts;
+use super::model::{ConstValue, Elementary, Model, Type, UserTypeDef};
+use super::typing::{literal_type, widens, LitType};
+use super::Analyzer;
+use crate::ast::{LiteralKind, Operand};
 use crate::Span;
 use diagnostics::code;
 
@@ -175,5 +187,78 @@ impl Body<'_, '_> {
             } else {
                 format!("an array index, a value stored into a number or compared with one: CODESYS and TwinCAT use the number of {n} so, also under {{attribute 'strict'}} (it forbids arithmetic and storing other values into the enumeration); write TO_DINT(...) for another IEC compiler")
             });
+    }
+}
+
+impl Analyzer<'_> {
+    /// The initial value of the loose enumeration `ty` that the integer `op` gives (a literal,
+    /// typed or not, or an integer constant): `None` when `ty` is no loose enumeration or `op` no
+    /// such integer (the caller checks it as any initial value); `Some(None)` after an error.
+    /// W1439 once per enumeration (see the module documentation).
+    pub(super) fn integer_initial_value(
+        &mut self,
+        op: &Operand,
+        ty: &Type,
+        consts: &Consts,
+    ) -> Option<Option<ConstValue>> {
+        let Type::Enum(id) = ty else { return None };
+        let values = loose_values(&self.model, ty)?;
+        let n = match op {
+            Operand::Literal(lit) => match (literal_type(lit).ok()?, &lit.kind) {
+                (LitType::Int(n), _) => n,
+                (LitType::Known(t), LiteralKind::Int(n))
+                    if t.elementary()
+                        .is_some_and(|e| e.is_integer() && widens(e, Elementary::Dint)) =>
+                {
+                    *n
+                }
+                _ => return None,
+            },
+            // a name that is a value of the enumeration is that value (`decls`)
+            Operand::Var(v)
+                if v.accessors.is_empty() && !values.iter().any(|(name, _)| v.base.is(name)) =>
+            {
+                match consts.get(&v.base.key()) {
+                    Some((t, ConstValue::Int(n)))
+                        if t.elementary()
+                            .is_some_and(|e| e.is_integer() && widens(e, Elementary::Dint)) =>
+                    {
+                        *n
+                    }
+                    _ => return None,
+                }
+            }
+            _ => return None,
+        };
+        let tn = self.type_name(ty);
+        let (lo, hi) = Elementary::Dint.int_range()?;
+        if n < lo || n > hi {
+            self.error(
+                code::E1017,
+                op.span(),
+                format!("initial value {n} does not fit {tn}"),
+            )
+            .label("out of range")
+            .hint(format!("{tn} is held as a DINT; use one of its values"));
+            return Some(None);
+        }
+        let index = values.iter().position(|(_, v)| *v == n);
+        let named = index
+            .and_then(|i| values.get(i))
+            .map(|(name, _)| format!("its value `{name}`"))
+            .unwrap_or_else(|| format!("the number {n}, which none of its values has"));
+        if !self.silent && self.loose_enum_inits.insert(*id) {
+            self.warning(
+                code::W1439,
+                op.span(),
+                format!("the enumeration {tn} initialised with an integer: IEC 61131-3 enumerations are no numbers (its other integer initial values are not reported)"),
+            )
+            .label(format!("taken as {named}"))
+            .hint(format!("compiled as CODESYS, TwinCAT and B&R Automation Studio do for an enumeration without {{attribute 'strict'}}; write {tn}#<value> for another IEC compiler"));
+        }
+        Some(Some(match index {
+            Some(index) => ConstValue::Enum { ty: *id, index },
+            None => ConstValue::Int(n),
+        }))
     }
 }

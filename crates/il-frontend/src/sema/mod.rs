@@ -146,6 +146,7 @@ fn analyze_with(units: &[CompilationUnit], diags: &mut Diagnostics, all_names: b
         counting_bit_string_pous: std::collections::HashSet::new(),
         integer_bits_pous: std::collections::HashSet::new(),
         loose_enum_pous: std::collections::HashSet::new(),
+        loose_enum_inits: std::collections::HashSet::new(),
         copying_instance_pous: std::collections::HashSet::new(),
         unknown_enums: Vec::new(),
         unknown_enum_uses: std::collections::HashSet::new(),
@@ -252,6 +253,8 @@ pub(crate) struct Analyzer<'d> {
     pub(crate) integer_bits_pous: std::collections::HashSet<PouId>,
     /// The POUs where W1439 (an enumeration used as an integer) was reported: once per POU.
     pub(crate) loose_enum_pous: std::collections::HashSet<PouId>,
+    /// The enumerations whose W1439 for an integer initial value was reported: once each.
+    pub(crate) loose_enum_inits: std::collections::HashSet<TypeId>,
     /// The POUs where W1437 (an FB instance copied whole) was reported: once per POU.
     pub(crate) copying_instance_pous: std::collections::HashSet<PouId>,
     /// The declarations of the inputs whose W1411 (written inside their POU) was reported: once per

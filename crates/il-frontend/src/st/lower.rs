@@ -27,6 +27,7 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 
 mod call_chain;
+mod case_labels;
 mod dynamic_memory;
 mod for_control;
 pub(crate) mod global_ns;
@@ -1437,7 +1438,7 @@ impl<'d> PouLowering<'d> {
         }
         if matches!(e.kind, ExprKind::Binary { .. } | ExprKind::Unary { .. })
             && constant_shape(e)
-            && self.enum_by_context(e, hint).is_none()
+            && self.value_of_enumeration(e, hint).is_none()
             && self.pure_operand(e).is_none()
         {
             let ty = self.temp_type(e, hint);
@@ -1450,7 +1451,8 @@ impl<'d> PouLowering<'d> {
     }
 
     /// A CASE label: a literal, an enumerated value or a constant (a plain operand); `hint` is the
-    /// selector's type.
+    /// selector's type. A bare name of a value of the selector's enumeration is that value, also
+    /// where a variable has the same name (`case_labels`).
     fn case_value(
         &mut self,
         e: &Expr,
@@ -1461,7 +1463,7 @@ impl<'d> PouLowering<'d> {
             return None;
         }
         let o = self
-            .enum_by_context(e, hint)
+            .value_of_enumeration(e, hint)
             .or_else(|| self.pure_operand(e));
         if o.is_none() {
             diags.push(
@@ -1970,31 +1972,15 @@ impl<'d> PouLowering<'d> {
     fn enum_by_context(&self, e: &Expr, hint: Option<&TypeRef>) -> Option<Operand> {
         let ExprKind::Place(Place {
             base: PlaceBase::Name(value),
-            accessors,
             ..
         }) = &e.kind
         else {
             return None;
         };
-        if !accessors.is_empty() || self.env().var_type(value).is_some() {
+        if self.env().var_type(value).is_some() {
             return None;
         }
-        let TypeRef::Named(t) = self.env().resolve(hint?) else {
-            return None;
-        };
-        let decl = self.decls.type_decl(&t.name)?;
-        match &decl.def {
-            crate::ast::TypeDef::Enum { values, .. }
-                if values.iter().any(|v| v.name.is(&value.name)) =>
-            {
-                Some(Operand::enum_value(
-                    Ident::new(decl.name.name.clone(), value.span),
-                    value.clone(),
-                    e.span,
-                ))
-            }
-            _ => None,
-        }
+        self.value_of_enumeration(e, hint)
     }
 
     /// W1430 when `e` is a bare name that is a variable (of another type) and also a value of the
