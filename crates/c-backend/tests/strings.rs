@@ -112,10 +112,12 @@ fn concat_is_extensible_and_truncates_to_the_declared_length() {
 
 #[test]
 fn concat_to_the_capacity_truncates_at_254_characters() {
+    // `big` is declared at the capacity: an unsized STRING holds only the default length (80,
+    // round 34's `default_string_length`).
     let long = "x".repeat(200);
     let (_, k, err) = run_body(
-        "",
-        "  LD s\n  CONCAT s\n  ST r\n  LD r\n  LEN\n  ST k\n",
+        "  big : STRING(254);",
+        "  LD s\n  CONCAT s\n  ST big\n  LD big\n  LEN\n  ST k\n",
         2,
         &format!("0,main.s,{long}\n1,main.s,abc\n"),
     );
