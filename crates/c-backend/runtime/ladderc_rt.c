@@ -765,9 +765,11 @@ int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_
     }
     if (*s) return fail(err, errlen, "unexpected text after the address", text);
     {
-        /* per-size images (%I and %Q): X and B, W, D, L, each a quarter of the flat size */
+        /* per-size images (%I and %Q; %M too with LADDERC_PER_SIZE_M): X and B, W, D, L, each a
+           quarter of the flat size; %M's TM window stays flat, in the first image */
         uint32_t image = 0;
-        if (LADDERC_PER_SIZE_IO && area != ladderc_M) {
+        int per_size = area == ladderc_M ? LADDERC_PER_SIZE_M : LADDERC_PER_SIZE_IO;
+        if (per_size) {
             size /= 4;
             image = is_bit || nbytes == 1 ? 0 : nbytes == 2 ? 1 : nbytes == 4 ? 2 : 3;
         }
@@ -775,6 +777,8 @@ int ladderc_resolve_address(const char *text, ladderc_var *out, char *err, size_
         if ((unsigned long)offset != (LADDERC_ADDR_BYTE_OFFSET ? idx : idx * nbytes) || offset >= size ||
             size - offset < nbytes)
             return fail(err, errlen, "address outside the area's size in the target profile", text);
+        if (area == ladderc_M && offset >= LADDERC_TM_OFFSET && offset - LADDERC_TM_OFFSET + nbytes <= LADDERC_TM_SIZE)
+            image = 0;
         offset += image * size;
     }
     out->name = text;

@@ -28,6 +28,9 @@
 #ifndef LADDERC_PER_SIZE_IO
 #define LADDERC_PER_SIZE_IO 0
 #endif
+#ifndef LADDERC_PER_SIZE_M
+#define LADDERC_PER_SIZE_M 0
+#endif
 #ifndef LADDERC_I_FLAT_SIZE
 #define LADDERC_I_FLAT_SIZE LADDERC_I_SIZE
 #endif

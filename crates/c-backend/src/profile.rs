@@ -4,7 +4,9 @@
 //! [`TargetProfile`] and, per direct address, its [`Located`] byte offset and bit in the %I/%Q/%M areas.
 //! Invariants: a validated profile has non-empty areas, the TM window inside %M, a power-of-two alignment;
 //! [`TargetProfile::locate`] only returns locations whose bytes lie inside their area (inside the
-//! image of their size with `"address_unit": "per_size"`, whose %I and %Q hold one image per size).
+//! image of their size with `"address_unit": "per_size"`, whose %I and %Q hold one image per size,
+//! and with `"memory_per_size": true`, whose %M does too but for its TM window, one flat window in
+//! the first image).
 
 use diagnostics::{code, Diagnostic, Diagnostics};
 use il_frontend::ast::{AddressSize, Area, DirectAddress};
@@ -54,7 +56,8 @@ pub enum AddressUnit {
     /// `%IW2` is the third word of the words' own image: %I and %Q have one image per size (X and B,
     /// W, D, L), each of `input_bytes` / `output_bytes`, so `%QX0.0` (a digital output) and `%QW0`
     /// (an analog one) never share bits, as OpenPLC and matiec keep them; %M counts elements as
-    /// [`AddressUnit::Element`] does (the TM window of parameter passing lies there).
+    /// [`AddressUnit::Element`] does (the TM window of parameter passing lies there), in one image
+    /// unless the profile's `memory_per_size` is set.
     #[serde(rename = "per_size")]
     PerSize,
 }
@@ -152,6 +155,17 @@ pub struct TargetProfile {
     /// `IEC_STRING`.
     #[serde(default = "default_string_length")]
     pub default_string_length: u32,
+    /// Whether %M has one image per size, as %I and %Q have with [`AddressUnit::PerSize`]: `%MX0.1`
+    /// and `%MB0` in the first, `%MW0` in the second, `%MD0` in the third, `%ML0` in the fourth, each
+    /// `memory_bytes` long and counted in elements, so `%MX0.1`, `%MW0`, `%MD0` and `%ML0` never share
+    /// bits. OpenPLC keeps its %M memory so (`int_memory`, `dint_memory`, `lint_memory`: one buffer
+    /// per size, and matiec gives every located variable storage of its own); `--profile openplc`
+    /// sets it. The TM window of parameter passing stays one flat window (its bytes in the first
+    /// image, whatever the size of the address that reaches them), as the static library reads it.
+    /// Optional in a profile file; the default is `false` (one image: `%MX0.1` is bit 1 of `%MW0`);
+    /// it needs element addressing (`address_unit` `"element"` or `"per_size"`).
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub memory_per_size: bool,
 }
 
 /// The default `default_string_length`: 80 characters, as CODESYS and TwinCAT.
@@ -205,6 +219,7 @@ impl Default for TargetProfile {
             time_number_unit: TimeNumberUnit::Milliseconds,
             sfc_action_control: SfcActionControl::Iec,
             default_string_length: DEFAULT_STRING_LENGTH,
+            memory_per_size: false,
         })
     }
 }
@@ -291,7 +306,9 @@ impl TargetProfile {
             ("output_bytes", self.output_bytes),
             ("memory_bytes", self.memory_bytes),
         ] {
-            let images = if self.address_unit == AddressUnit::PerSize && name != "memory_bytes" {
+            let images = if name == "memory_bytes" {
+                self.images(Area::Memory)
+            } else if self.address_unit == AddressUnit::PerSize {
                 4
             } else {
                 1
@@ -317,6 +334,12 @@ impl TargetProfile {
                 "alignment must be 1, 2, 4 or 8, got {}",
                 self.alignment
             ));
+        }
+        if self.memory_per_size && self.address_unit == AddressUnit::Byte {
+            return bad(
+                "memory_per_size needs element addressing (address_unit \"element\" or \"per_size\"), got address_unit \"byte\""
+                    .into(),
+            );
         }
         if self.data_bytes == 0 {
             return bad("data_bytes must be at least 1".into());
@@ -348,14 +371,24 @@ impl TargetProfile {
         }
     }
 
-    /// How many images `area` has: 4 for %I and %Q with [`AddressUnit::PerSize`] (X and B, W, D, L,
-    /// in that order in the area's C array), else 1.
+    /// How many images `area` has: 4 for %I and %Q with [`AddressUnit::PerSize`] and for %M with
+    /// `memory_per_size` (X and B, W, D, L, in that order in the area's C array), else 1.
     pub fn images(&self, area: Area) -> u32 {
-        if self.address_unit == AddressUnit::PerSize && area != Area::Memory {
+        let per_size = match area {
+            Area::Memory => self.memory_per_size,
+            Area::Input | Area::Output => self.address_unit == AddressUnit::PerSize,
+        };
+        if per_size {
             4
         } else {
             1
         }
+    }
+
+    /// Whether bytes `offset..offset + bytes` of %M lie in the TM window of parameter passing.
+    fn in_tm_window(&self, offset: u64, bytes: u32) -> bool {
+        offset >= u64::from(self.tm_offset)
+            && offset + u64::from(bytes) <= u64::from(self.tm_offset) + u64::from(self.tm_bytes)
     }
 
     /// The byte range `(offset, bytes)` a flat direct address accessed with `access_bytes` bytes
@@ -399,7 +432,9 @@ impl TargetProfile {
         } else {
             access_bytes.unwrap_or(size_bytes).max(1)
         };
-        let image = if self.images(addr.area) > 1 {
+        // the TM window is one flat window (module header): its bytes are in the first image
+        let tm = addr.area == Area::Memory && self.in_tm_window(offset, bytes);
+        let image = if self.images(addr.area) > 1 && !tm {
             match addr.size {
                 AddressSize::Bit | AddressSize::Byte => 0,
                 AddressSize::Word => 1,
@@ -543,4 +578,54 @@ pub fn address_text(addr: &DirectAddress) -> String {
             .join(".")
     };
     format!("{}{size}{path}", area_name(addr.area))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn memory(size: AddressSize, path: &[u32]) -> DirectAddress {
+        DirectAddress {
+            area: Area::Memory,
+            size,
+            path: path.to_vec(),
+            span: Default::default(),
+        }
+    }
+
+    /// `--profile openplc`: `%MX0.1`, `%MW0`, `%MD0` and `%ML0` each in an image of their own
+    /// (`memory_per_size`), while the TM window stays one flat window in the first image, where
+    /// the static library of parameter passing reads it.
+    #[test]
+    fn openplc_memory_is_one_image_per_size_but_for_the_tm_window() {
+        let p = TargetProfile::built_in(Path::new("openplc")).expect("built in");
+        assert!(p.memory_per_size);
+        assert_eq!(p.area_size(Area::Memory), 4 * p.memory_bytes);
+        let at = |size, path: &[u32]| p.locate(&memory(size, path), None).map(|l| l.offset).ok();
+        assert_eq!(at(AddressSize::Bit, &[0, 1]), Some(0));
+        assert_eq!(at(AddressSize::Word, &[0]), Some(p.memory_bytes));
+        assert_eq!(at(AddressSize::DWord, &[0]), Some(2 * p.memory_bytes));
+        assert_eq!(at(AddressSize::LWord, &[0]), Some(3 * p.memory_bytes));
+        // the TM window (bytes 7936..8192): every size reaches the same bytes
+        assert_eq!(
+            at(AddressSize::DWord, &[p.tm_offset / 4]),
+            Some(p.tm_offset)
+        );
+        assert_eq!(at(AddressSize::Word, &[p.tm_offset / 2]), Some(p.tm_offset));
+        let default = TargetProfile::default();
+        assert!(!default.memory_per_size);
+        assert_eq!(default.images(Area::Memory), 1);
+    }
+
+    /// `memory_per_size` counts elements: with byte addressing the profile is refused.
+    #[test]
+    fn memory_per_size_needs_element_addressing() {
+        let json = DEFAULT_PROFILE_JSON.replace(
+            "\"address_unit\": \"element\"",
+            "\"address_unit\": \"byte\", \"memory_per_size\": true",
+        );
+        assert_ne!(json, DEFAULT_PROFILE_JSON);
+        let err = TargetProfile::from_json(&json).expect_err("refused");
+        assert!(err.to_string().contains("memory_per_size"), "{err}");
+    }
 }

@@ -281,6 +281,10 @@ fn config_header_with(p: &TargetProfile, ext: [u32; 3]) -> String {
         // %I and %Q: four images (X and B, W, D, L) of a quarter of the flat size each
         let _ = writeln!(s, "#define LADDERC_PER_SIZE_IO 1");
     }
+    if p.memory_per_size {
+        // %M: four images too, but for the TM window, flat in the first (`TargetProfile::images`)
+        let _ = writeln!(s, "#define LADDERC_PER_SIZE_M 1");
+    }
     // the nanoseconds of one unit of a number converted to or from TIME (`emit::values`)
     let _ = writeln!(
         s,

@@ -1024,6 +1024,20 @@ impl Pou {
     }
 }
 
+/// A variable a body writes, by its declaration ([`Model::written`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum WrittenVar {
+    /// `Model::pous[pou].vars[index]`, not a `VAR_EXTERNAL`.
+    Pou {
+        /// The POU declaring it.
+        pou: PouId,
+        /// Index into its `vars`.
+        index: usize,
+    },
+    /// A global (through a `VAR_EXTERNAL`, or a free global used directly).
+    Global(GlobalRef),
+}
+
 /// Where a global variable lives.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Serialize)]
 pub enum GlobalRef {
@@ -1396,6 +1410,13 @@ pub struct Model {
     pub programs_used_by_name: Vec<PouId>,
     /// Keyed by the instruction's identity ([`InstrId::of`]).
     pub instrs: InstrTable,
+    /// The variables a body writes (`ST`, `S`, `R`, an ST assignment, an output `=>`), by their
+    /// declaration: a POU's own variable, or the global a `VAR_EXTERNAL` or a direct use names (read
+    /// by the C generator's overlap warnings on located variables, `c_backend::emit::overlaps`).
+    /// A member of a named list written as `GVL.x`, a `VAR_IN_OUT` argument and a write through a
+    /// reference are not recorded.
+    #[serde(skip)]
+    pub written: FxHashSet<WrittenVar>,
     /// What each variable name in the bodies refers to, keyed by the span of `VarRef::base` (operands,
     /// call arguments, indexes, CAL instances); from [`crate::sema::analyze_for_code`], only the uses
     /// of a function's name as its result.

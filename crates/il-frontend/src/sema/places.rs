@@ -171,6 +171,7 @@ impl Body<'_, '_> {
         match o {
             Operand::Var(v) => {
                 let p = self.resolve_var(v);
+                self.note_written(v);
                 // Only a FUNCTION has a result variable (looked up only there: the names table is big).
                 if self.pou().kind == PouKind::Function
                     && self.a.model.names.get(&v.base.span) == Some(&NameRef::FunctionResult)
@@ -211,6 +212,24 @@ impl Body<'_, '_> {
                 Type::Error
             }
         }
+    }
+
+    /// Records the declaration `v` (or the array or structure it is part of) writes in
+    /// [`crate::sema::Model::written`]: the POU's own variable, or the global its `VAR_EXTERNAL` or
+    /// its name binds (a member of a named list, `GVL.x`, is left out).
+    fn note_written(&mut self, v: &VarRef) {
+        let pou = self.pou;
+        let written = match self.pou().var_position(&v.base.name) {
+            Some(index) => match self.pou().externals.iter().find(|(i, _)| *i == index) {
+                Some(&(_, global)) => WrittenVar::Global(global),
+                None => WrittenVar::Pou { pou, index },
+            },
+            None => match self.a.free_globals.get(&v.base.key()) {
+                Some(&i) => WrittenVar::Global(GlobalRef::Free(i)),
+                None => return,
+            },
+        };
+        self.a.model.written.insert(written);
     }
 
     fn report_read_only(&mut self, v: &VarRef, ro: ReadOnly, what: &str) {
