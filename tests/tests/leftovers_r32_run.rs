@@ -402,7 +402,9 @@ fn a_transition_object_drawn_in_fbd_is_its_network_condition() {
     assert_eq!(code, Some(0), "{err}");
     assert_eq!(
         column(&out, "MAIN.nLevel"),
-        [0.0, 0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 30.0, 10.0, -10.0, -10.0, -10.0],
+        // TwinCAT's processing order (round 34): each step's actions from the scan after its
+        // transition, one scan later than before
+        [0.0, 0.0, 0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 30.0, 10.0, -10.0, -10.0],
         "{out}"
     );
     assert_eq!(

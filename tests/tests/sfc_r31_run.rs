@@ -227,9 +227,11 @@ fn step_x_and_step_t_in_a_twincat_chart_s_actions_are_the_step_s_flag_and_time()
         [
             "T#0ms,0,0,1,0",
             "T#0ms,0,0,1,0",
+            // TwinCAT's processing order (round 34): `Fill`'s action from the scan after
+            // `bGo`'s, its flag set at the end of `bGo`'s scan
+            "T#0ms,0,0,1,1",
             "T#0ms,1,0,1,1",
             "T#10ms,1,0,1,1",
-            "T#20ms,1,0,1,1",
             "T#20ms,1,0,1,0",
             "T#20ms,1,0,1,0",
         ]
@@ -480,8 +482,9 @@ fn super_call_of_a_twincat_chart_base_runs_one_scan_of_it() {
     assert_eq!(
         rows(&trace),
         // S0, S1, S2 active, the scans counted by S1's N action (one last scan as S1 is left);
-        // `go` stays TRUE from scan 3: one step per scan
-        ["1,0,0,0", "0,1,0,1", "0,1,0,2", "0,0,1,3", "1,0,0,3", "0,1,0,4"],
+        // `go` stays TRUE from scan 3: one step per scan; TwinCAT's processing order (round
+        // 34): a step's actions from the scan after its transition
+        ["1,0,0,0", "0,1,0,0", "0,1,0,1", "0,0,1,2", "1,0,0,3", "0,1,0,3"],
         "{trace}"
     );
 }
