@@ -63,12 +63,14 @@ fn a_parallel_branch_activates_every_sequence_and_its_convergence_waits_for_all(
     assert_eq!(
         rows,
         [
+            // TwinCAT's processing order (round 34): each step's actions from the scan after
+            // its transition
             "0,0,0,1,0,0,0",
+            "0,0,0,0,1,0,1",
             "1,0,1,0,1,0,1",
             "2,0,2,0,1,0,1",
             "3,0,3,0,1,0,1",
-            "4,0,4,0,1,0,1",
-            "4,1,5,0,0,1,1",
+            "4,0,4,0,0,1,1",
             "4,1,5,1,0,0,0",
             "4,1,5,1,0,0,0",
             "4,1,5,1,0,0,0",

@@ -118,7 +118,7 @@ fn the_other_sequence_of_the_branch_jumps_back_and_sfc_reset_resets_the_chart() 
     // Fill.X: scans 2-3 (aborted at 4), then 6-8
     assert_eq!(col(8), [0, 0, 1, 1, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0]);
     // nEntry: each entry into Fill; nExit: each exit (the abort, then T_Full)
-    assert_eq!(col(2)[3..10], [1, 1, 1, 2, 2, 2, 2]);
+    assert_eq!(col(2)[3..10], [1, 1, 1, 1, 2, 2, 2]);
     assert_eq!(col(4)[3..10], [0, 1, 1, 1, 1, 1, 2]);
     // nLevel: +10 in Fill (kept over the abort), -20 in Drain from scan 9
     assert_eq!(
@@ -290,12 +290,14 @@ fn an_alternative_branch_of_sequences_ending_in_steps_has_one_transition_after_i
         [
             "0,0,1,0,0",
             "0,0,0,0,0",
-            "0,1,0,0,1",
+            // TwinCAT's processing order (round 34): a step's actions from the scan after its
+            // transition
+            "0,0,0,0,1",
             "0,1,1,0,0",
             "0,1,1,0,0",
             "0,1,0,0,0",
+            "0,1,0,1,0",
             "1,1,0,1,0",
-            "2,1,0,1,0",
             "2,1,1,0,0",
             "2,1,1,0,0"
         ]

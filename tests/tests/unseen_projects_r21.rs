@@ -336,7 +336,7 @@ END_PROGRAM
     );
     assert_eq!(
         trace,
-        "cycle,time_ms,cMinTime,cMinL,cT,cR,cMs,cSec,Main.same\n0,0,T#0ms,T#2ms,T#1000ms,T#2500us,1500,0.25,1\n"
+        "cycle,time_ms,cMinTime,cMinL,cT,cR,cMs,cSec,Main.same\n0,0,T#0ms,T#2ms,T#1000ms,T#2ms,1500,0.25,1\n"
     );
 }
 
