@@ -312,7 +312,9 @@ END_PROGRAM
     );
 }
 
-/// Conversions to and from TIME in constants count milliseconds, as at run time.
+/// Conversions to and from TIME in constants count milliseconds, as at run time; a real number
+/// to TIME is rounded to whole milliseconds, halves to even (round 34, Beckhoff infosys
+/// "REAL/LREAL_TO_<type>": `REAL_TO_TIME(2.5)` is `T#2ms`, before `T#2500us`).
 #[test]
 fn time_conversions_are_computed_in_constants() {
     let src = "VAR_GLOBAL CONSTANT
