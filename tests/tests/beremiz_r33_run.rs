@@ -81,15 +81,17 @@ END_CONFIGURATION
 
 const TIME_WATCH: &str = "inst.pt,inst.done,inst.elapsed,inst.whole,inst.from_int,inst.kept";
 
-/// The default profile counts milliseconds: `REAL_TO_TIME(1.5)` is T#1.5ms, so the TON is done in
-/// the second scan (20 ms); `TIME_TO_REAL(T#20ms)` would be 20.0, `TIME_TO_DINT(T#2500ms)` 2500,
-/// `DINT_TO_TIME(2)` T#2ms, the constant `UINT_TO_TIME(3)` T#3ms. Unchanged by round 33.
+/// The default profile counts milliseconds: `REAL_TO_TIME(1.5)` is T#2ms (a whole number of
+/// milliseconds, halves to even, as CODESYS and TwinCAT keep TIME; round 34, before: T#1.5ms,
+/// `tests/tests/vendor_sem_r34_run.rs`), so the TON is done in the second scan (20 ms) with
+/// `TIME_TO_REAL` of its ET 2.0; `TIME_TO_DINT(T#2500ms)` 2500, `DINT_TO_TIME(2)` T#2ms, the
+/// constant `UINT_TO_TIME(3)` T#3ms. Unchanged by round 33.
 #[test]
 fn the_default_profile_counts_milliseconds() {
     let trace = run("units.st", TIME_NUMBERS, 3, TIME_WATCH, &[]);
-    assert_eq!(text_column(&trace, "inst.pt")[0], "T#1500us", "{trace}");
+    assert_eq!(text_column(&trace, "inst.pt")[0], "T#2ms", "{trace}");
     assert_eq!(first_true(&trace, "inst.done"), Some(1), "{trace}");
-    assert_eq!(text_column(&trace, "inst.elapsed")[1], "1.5", "{trace}");
+    assert_eq!(text_column(&trace, "inst.elapsed")[1], "2", "{trace}");
     assert_eq!(text_column(&trace, "inst.whole")[0], "2500", "{trace}");
     assert_eq!(text_column(&trace, "inst.from_int")[0], "T#2ms", "{trace}");
     assert_eq!(text_column(&trace, "inst.kept")[0], "T#3ms", "{trace}");

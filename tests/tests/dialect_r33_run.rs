@@ -251,11 +251,14 @@ fn twincat_chart_reads_underscore_step_time() {
     let fill = column(&t, "MAIN.__sfc_X_Fill");
     let first = fill.iter().position(|&v| v == 1.0).unwrap();
     let left = first + fill[first..].iter().position(|&v| v == 0.0).unwrap();
-    // active 3 scans (entered at 20 ms): the scan at 50 ms reads 30 ms and goes on to Drain;
-    // the level is 30, short of the 50 the fixture's own condition waits for
-    assert_eq!(left - first, 3, "{t}");
+    // active 4 scans (TwinCAT's processing order since round 34: `Fill._x` set by the transition
+    // check at the end of the scan at 20 ms, its actions from 30 ms, `_t` 0..30 ms, left by the
+    // check of the scan that reads 30 ms; before: 3 scans); the level is 40 then (aFill ran in
+    // that scan before the check), short of the 50 the fixture's own condition waits for
+    assert_eq!(left - first, 4, "{t}");
     assert_eq!(column(&t, "MAIN.__sfc_X_Drain")[left], 1.0, "{t}");
     assert_eq!(column(&t, "MAIN.nLevel")[left - 1], 30.0, "{t}");
+    assert_eq!(column(&t, "MAIN.nLevel")[left], 40.0, "{t}");
 }
 
 /// An unknown flag of a step (`Fill.Foo`) is one E1021 at the field, naming the step and the

@@ -369,9 +369,10 @@ END_PROGRAM
 /// assigning the transition's name; IEC 61131-3 ed. 3 8.3.3 allows a transition condition in LD
 /// or FBD) is read as the ST statement of its network: the chart of `twincat_sfc_run.rs` with
 /// `T_Full` drawn as `GE(nLevel, 50) -> T_Full` runs scan by scan as with the ST condition
-/// `nLevel >= 50`: Fill adds 10 per scan from scan 2, T_Full fires at 50 (scan 7: Fill's exit
-/// action counts, Drain takes 20 per scan). Before: E0321 "the transition `T_Full` is not one
-/// boolean expression", nothing run.
+/// `nLevel >= 50`: in TwinCAT's processing order (actions first, the transition check last, round
+/// 34) Fill adds 10 per scan from scan 3, T_Full fires at 50 at the end of scan 7, and in scan 8
+/// Fill's exit action counts and Drain takes 20 per scan. Before: E0321 "the transition `T_Full`
+/// is not one boolean expression", nothing run.
 #[test]
 fn a_transition_object_drawn_in_fbd_is_its_network_condition() {
     let fixture = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -402,12 +403,15 @@ fn a_transition_object_drawn_in_fbd_is_its_network_condition() {
     assert_eq!(code, Some(0), "{err}");
     assert_eq!(
         column(&out, "MAIN.nLevel"),
-        [0.0, 0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 30.0, 10.0, -10.0, -10.0, -10.0],
+        // TwinCAT's processing order (round 34): each step's actions from the scan after its
+        // transition, one scan later than before (as `twincat_sfc_run.rs`)
+        [0.0, 0.0, 0.0, 10.0, 20.0, 30.0, 40.0, 50.0, 30.0, 10.0, -10.0, -10.0],
         "{out}"
     );
     assert_eq!(
         column(&out, "MAIN.nExit"),
-        [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0, 1.0],
+        // Fill's exit action in the scan after T_Full (scan 8; before: 7)
+        [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0],
         "{out}"
     );
 }

@@ -188,9 +188,10 @@ fn a_one_step_chart_s_step_action_reads_its_step_flag() {
 /// The steps' flags in the actions of a two-step TwinCAT chart: `Idle` -> `bGo` -> `Fill` ->
 /// `bDone` -> jump `Idle`. `Fill`'s step action copies `Fill.t` and `Fill.x`, and `Idle.x`
 /// (inactive there); `Idle`'s copies `Idle.x`. Scan by scan (10 ms; a stimulus row of cycle `n`
-/// shows from the trace's row `n + 1`): `bGo` enters `Fill`, whose time counts 0, 10, 20 ms while
-/// it stays, and `bDone` leaves it (its action does not run in that scan, the copies keep their
-/// values). Before round 31: E1001 "undeclared name
+/// shows from the trace's row `n + 1`), in TwinCAT's processing order (round 34: the actions
+/// first, the transition check last): `bGo` enters `Fill` at the end of its scan, whose action
+/// runs from the next scan with the time counting 0, 10, 20 ms, and `bDone` leaves it at the end
+/// of its scan (the action does not run in the scan after, the copies keep their values). Before round 31: E1001 "undeclared name
 /// `Fill`".
 #[test]
 fn step_x_and_step_t_in_a_twincat_chart_s_actions_are_the_step_s_flag_and_time() {
@@ -227,9 +228,11 @@ fn step_x_and_step_t_in_a_twincat_chart_s_actions_are_the_step_s_flag_and_time()
         [
             "T#0ms,0,0,1,0",
             "T#0ms,0,0,1,0",
+            // TwinCAT's processing order (round 34): `Fill`'s action from the scan after
+            // `bGo`'s, its flag set at the end of `bGo`'s scan
+            "T#0ms,0,0,1,1",
             "T#0ms,1,0,1,1",
             "T#10ms,1,0,1,1",
-            "T#20ms,1,0,1,1",
             "T#20ms,1,0,1,0",
             "T#20ms,1,0,1,0",
         ]
@@ -479,9 +482,10 @@ fn super_call_of_a_twincat_chart_base_runs_one_scan_of_it() {
     assert!(!stderr.contains("error"), "{stderr}");
     assert_eq!(
         rows(&trace),
-        // S0, S1, S2 active, the scans counted by S1's N action (one last scan as S1 is left);
-        // `go` stays TRUE from scan 3: one step per scan
-        ["1,0,0,0", "0,1,0,1", "0,1,0,2", "0,0,1,3", "1,0,0,3", "0,1,0,4"],
+        // S0, S1, S2 active, the scans counted by S1's N action (one last scan after S1 is left);
+        // `go` stays TRUE from scan 3: one step per scan; TwinCAT's processing order (round
+        // 34): a step's actions from the scan after its transition
+        ["1,0,0,0", "0,1,0,0", "0,1,0,1", "0,0,1,2", "1,0,0,3", "0,1,0,3"],
         "{trace}"
     );
 }

@@ -78,9 +78,11 @@ CONFIGURATION C\nRESOURCE R ON PLC\nTASK T(INTERVAL := T#10ms, PRIORITY := 1);\n
 /// `FUNCTION_BLOCK FB_Seq EXTENDS FB_Base IMPLEMENTS I_Count` with an SFC body (a TwinCAT
 /// `.TcPOU`, x-PPU's `ControlPrimitiveBase` / `LinearSequence` form): the chart runs, its action
 /// writes the base's `nBase`, its method calls the base's method `Offset`, and the block is
-/// called through the interface. `go` rises at scan 2 and falls at scan 5: Run becomes active in
-/// scan 2 (its N action runs in the scan the step becomes active) and is left in scan 5 (N runs
-/// once more as it is left), so `nRun` counts 1, 2, 3, 4 in scans 2..5 then stays 4. Before: two E0015 "declarations after instructions" at the
+/// called through the interface. `go` rises at scan 2 and falls at scan 5; the chart runs in
+/// TwinCAT's processing order (round 34: the actions first, the transition check last, Beckhoff
+/// infosys "Processing Order in SFC"): Run becomes active at the end of scan 2 (its N action runs
+/// from scan 3) and is left at the end of scan 5 (N runs once more in scan 6, its final scan), so
+/// `nRun` counts 1, 2, 3, 4 in scans 3..6 then stays 4 (before: in scans 2..5). Before: two E0015 "declarations after instructions" at the
 /// clause, nothing compiled.
 #[test]
 fn a_chart_block_that_extends_and_implements_runs_with_its_base() {
@@ -99,7 +101,8 @@ fn a_chart_block_that_extends_and_implements_runs_with_its_base() {
         "P.n,P.base,P.counted",
     );
     let n = column(&trace, "P.n");
-    assert_eq!(n, [0., 0., 1., 2., 3., 4., 4., 4., 4.], "{trace}");
+    // TwinCAT's processing order (round 34): the count from the scan after `go`'s
+    assert_eq!(n, [0., 0., 0., 1., 2., 3., 4., 4., 4.], "{trace}");
     let base: Vec<f64> = n.iter().map(|v| v * 10.).collect();
     assert_eq!(column(&trace, "P.base"), base);
     let counted: Vec<f64> = n.iter().map(|v| v + 1000.).collect();
@@ -141,7 +144,8 @@ fn super_call_of_a_chart_base_runs_its_chart() {
         "P.n,P.base,P.steps",
     );
     let n = column(&trace, "P.n");
-    assert_eq!(n, [0., 0., 1., 2., 3., 4., 4., 4., 4.], "{trace}");
+    // TwinCAT's processing order (round 34): the count from the scan after `go`'s
+    assert_eq!(n, [0., 0., 0., 1., 2., 3., 4., 4., 4.], "{trace}");
     let base: Vec<f64> = n.iter().map(|v| v * 10.).collect();
     assert_eq!(column(&trace, "P.base"), base);
     assert_eq!(

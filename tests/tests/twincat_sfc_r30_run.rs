@@ -19,14 +19,17 @@ fn fixture() -> PathBuf {
 }
 
 /// `Wait` -> `bGo` -> parallel (`StepA` -> `bA` -> `StepA2` | `StepB`) -> `bDone` -> `Wait`, each
-/// step action counting its scans. Scan by scan (the transitions see the steps active at the
-/// scan's start, then the active steps' actions run; a CODESYS step action does not run in the
-/// scan its step is left):
-/// - scan 1, `bGo`: `Wait` is left, `StepA` and `StepB` both become active and count (1, 1);
+/// step action counting its scans. Scan by scan, in TwinCAT's processing order (round 34; Beckhoff
+/// infosys and CODESYS "Processing Order in SFC": the actions of the steps active at the scan's
+/// start first, the transition check last; a CODESYS step action does not run in the scan after
+/// its step is left):
+/// - scan 1, `bGo`: `Wait` is left, `StepA` and `StepB` both become active; they count from
+///   scan 2 (1, 1);
 /// - scans 3-4, `bDone` TRUE: the convergence does not fire, `StepA2` is not active yet;
-/// - scan 5, `bA`: `StepA` -> `StepA2` (its action counts 1), `StepB` stays (5);
-/// - scan 6: `StepA2` and `StepB` are both active and `bDone` holds: both are left, `Wait` is
-///   active, and nothing counts any more.
+/// - scan 5, `bA`: `StepA` and `StepB` count (4, 4), then `StepA2` becomes active (the
+///   convergence sees `StepA2` inactive in this scan's check);
+/// - scan 6: `StepA2` counts 1, `StepB` 5; both are active and `bDone` holds: both are left,
+///   `Wait` is active, and nothing counts any more.
 #[test]
 fn a_parallel_branch_activates_every_sequence_and_its_convergence_waits_for_all() {
     let dir = tempfile::tempdir().unwrap();
@@ -63,12 +66,14 @@ fn a_parallel_branch_activates_every_sequence_and_its_convergence_waits_for_all(
     assert_eq!(
         rows,
         [
+            // TwinCAT's processing order (round 34): each step's actions from the scan after
+            // its transition
             "0,0,0,1,0,0,0",
+            "0,0,0,0,1,0,1",
             "1,0,1,0,1,0,1",
             "2,0,2,0,1,0,1",
             "3,0,3,0,1,0,1",
-            "4,0,4,0,1,0,1",
-            "4,1,5,0,0,1,1",
+            "4,0,4,0,0,1,1",
             "4,1,5,1,0,0,0",
             "4,1,5,1,0,0,0",
             "4,1,5,1,0,0,0",

@@ -75,9 +75,14 @@ fn run(stimulus: &str, cycles: u32) -> Vec<Vec<i64>> {
 /// Idle (initial, `aIdle` N) -> `bStart` -> Fill (entry `aFillEntry`, step action `aFill`: +10,
 /// exit `aFillExit`) -> the branch's left sequence, the `<Transition>` object `T_Full`
 /// (`nLevel >= 50`) -> Drain (step action `aDrain`: -20, `aLamp` S) -> `nLevel <= 0;` -> the jump
-/// back to Idle. Each scan evaluates the transitions on the steps active at its start, then runs
-/// the actions: the entry and step actions in the scan the step becomes active, the exit action
-/// (not the step action) in the scan it is left, N once more after its step is left, S on after.
+/// back to Idle. Each scan runs in TwinCAT's and CODESYS's documented "Processing Order in SFC"
+/// (Beckhoff infosys tc3_plc_intro, CODESYS SFC help; round 34, before: IEC order, the transitions
+/// first): first the actions of the steps active at the scan's start (exit actions of the steps
+/// left in the scan before, entry actions, step actions, IEC actions), last the transition check,
+/// which reads what the actions wrote in this scan. So a transition that fires in scan k activates
+/// its step for scan k+1 (`Step.X` in the trace is already the new step's at the end of scan k):
+/// the entry and step actions run from scan k+1, the exit action (not the step action) of the step
+/// left runs in scan k+1, N once more in scan k+1 (its final scan), S on after.
 #[test]
 fn a_twincat_chart_runs_its_steps_transitions_branch_jump_and_step_actions() {
     let rows = run("2,MAIN.bStart,1\n3,MAIN.bStart,0\n", 12);
@@ -85,19 +90,22 @@ fn a_twincat_chart_runs_its_steps_transitions_branch_jump_and_step_actions() {
     let expected: [[i64; 10]; 12] = [
         [0, 1, 0, 0, 0, 0, 0, 1, 0, 0],
         [0, 2, 0, 0, 0, 0, 0, 1, 0, 0],
-        // bStart: Fill's entry and step action in the same scan; aIdle's final scan
-        [10, 3, 1, 1, 0, 0, 0, 0, 1, 0],
-        [20, 3, 1, 2, 0, 0, 0, 0, 1, 0],
-        [30, 3, 1, 3, 0, 0, 0, 0, 1, 0],
-        [40, 3, 1, 4, 0, 0, 0, 0, 1, 0],
-        [50, 3, 1, 5, 0, 0, 0, 0, 1, 0],
-        // T_Full (50 >= 50): Fill's exit action, not its step action; Drain's step action, aLamp set
-        [30, 3, 1, 5, 1, 1, 1, 0, 0, 1],
-        [10, 3, 1, 5, 1, 2, 1, 0, 0, 1],
-        [-10, 3, 1, 5, 1, 3, 1, 0, 0, 1],
-        // nLevel <= 0: the jump to Idle; aLamp stays set
-        [-10, 4, 1, 5, 1, 4, 1, 1, 0, 0],
-        [-10, 5, 1, 5, 1, 5, 1, 1, 0, 0],
+        // bStart: aIdle runs (Idle still active), then the transition activates Fill
+        [0, 3, 0, 0, 0, 0, 0, 0, 1, 0],
+        // Fill's entry and step action; aIdle's final scan
+        [10, 4, 1, 1, 0, 0, 0, 0, 1, 0],
+        [20, 4, 1, 2, 0, 0, 0, 0, 1, 0],
+        [30, 4, 1, 3, 0, 0, 0, 0, 1, 0],
+        [40, 4, 1, 4, 0, 0, 0, 0, 1, 0],
+        // aFill brings nLevel to 50, then T_Full (50 >= 50, read after the actions) activates Drain
+        [50, 4, 1, 5, 0, 0, 0, 0, 0, 1],
+        // Fill's exit action, not its step action; Drain's step action, aLamp set
+        [30, 4, 1, 5, 1, 1, 1, 0, 0, 1],
+        [10, 4, 1, 5, 1, 2, 1, 0, 0, 1],
+        // aDrain brings nLevel to -10, then `nLevel <= 0` takes the jump to Idle
+        [-10, 4, 1, 5, 1, 3, 1, 1, 0, 0],
+        // aIdle again; aLamp stays set
+        [-10, 5, 1, 5, 1, 4, 1, 1, 0, 0],
     ];
     assert_eq!(rows.len(), expected.len());
     for (k, (row, want)) in rows.iter().zip(expected.iter()).enumerate() {
@@ -108,7 +116,9 @@ fn a_twincat_chart_runs_its_steps_transitions_branch_jump_and_step_actions() {
 /// The branch's right sequence: `bAbort` in Fill runs Fill's exit action and jumps to Idle (the
 /// left sequence's `T_Full` is FALSE, so it has no say); a second start enters Fill again (its
 /// entry action again). The POU's SFC settings enable SFCReset: TRUE resets the chart to Idle and
-/// the stored action `aLamp` (one final scan, as IEC's action control gives).
+/// the stored action `aLamp` (one final scan, as IEC's action control gives). In TwinCAT's
+/// processing order (as the test above): Fill.X is set by the transition at the end of a scan, the
+/// actions it starts or ends run from the next scan.
 #[test]
 fn the_other_sequence_of_the_branch_jumps_back_and_sfc_reset_resets_the_chart() {
     let stim = "2,MAIN.bStart,1\n3,MAIN.bStart,0\n4,MAIN.bAbort,1\n5,MAIN.bAbort,0\n\
@@ -117,16 +127,18 @@ fn the_other_sequence_of_the_branch_jumps_back_and_sfc_reset_resets_the_chart() 
     let col = |k: usize| rows.iter().map(|r| r[k]).collect::<Vec<_>>();
     // Fill.X: scans 2-3 (aborted at 4), then 6-8
     assert_eq!(col(8), [0, 0, 1, 1, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 0, 0]);
-    // nEntry: each entry into Fill; nExit: each exit (the abort, then T_Full)
-    assert_eq!(col(2)[3..10], [1, 1, 1, 2, 2, 2, 2]);
-    assert_eq!(col(4)[3..10], [0, 1, 1, 1, 1, 1, 2]);
-    // nLevel: +10 in Fill (kept over the abort), -20 in Drain from scan 9
+    // nEntry: each entry into Fill (scans 3 and 7); nExit: each exit (the abort at 4 in scan 5,
+    // T_Full at 9 in scan 10)
+    assert_eq!(col(2)[3..10], [1, 1, 1, 1, 2, 2, 2]);
+    assert_eq!(col(4)[3..11], [0, 0, 1, 1, 1, 1, 1, 2]);
+    // nLevel: +10 in Fill from scan 3 (aFill runs in scan 4 before bAbort is checked; kept over
+    // the abort), again from scan 7, -20 in Drain from scan 10
     assert_eq!(
-        col(0)[..12],
-        [0, 0, 10, 20, 20, 20, 30, 40, 50, 30, 10, -10]
+        col(0)[..13],
+        [0, 0, 0, 10, 20, 20, 20, 30, 40, 50, 30, 10, -10]
     );
-    // aLamp (S) runs from scan 9 until SFCReset at scan 14 (its final scan), then never again
-    assert_eq!(col(5)[12..], [4, 5, 6, 6, 6]);
+    // aLamp (S) runs from scan 10 until SFCReset at scan 14 (its final scan), then never again
+    assert_eq!(col(5)[12..], [3, 4, 5, 5, 5]);
     assert_eq!(col(7)[14..], [1, 1, 1], "SFCReset: the initial step");
 }
 
@@ -290,12 +302,14 @@ fn an_alternative_branch_of_sequences_ending_in_steps_has_one_transition_after_i
         [
             "0,0,1,0,0",
             "0,0,0,0,0",
-            "0,1,0,0,1",
+            // TwinCAT's processing order (round 34): a step's actions from the scan after its
+            // transition
+            "0,0,0,0,1",
             "0,1,1,0,0",
             "0,1,1,0,0",
             "0,1,0,0,0",
+            "0,1,0,1,0",
             "1,1,0,1,0",
-            "2,1,0,1,0",
             "2,1,1,0,0",
             "2,1,1,0,0"
         ]

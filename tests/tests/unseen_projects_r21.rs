@@ -312,7 +312,9 @@ END_PROGRAM
     );
 }
 
-/// Conversions to and from TIME in constants count milliseconds, as at run time.
+/// Conversions to and from TIME in constants count milliseconds, as at run time; a real number
+/// to TIME is rounded to whole milliseconds, halves to even (round 34, Beckhoff infosys
+/// "REAL/LREAL_TO_<type>": `REAL_TO_TIME(2.5)` is `T#2ms`, before `T#2500us`).
 #[test]
 fn time_conversions_are_computed_in_constants() {
     let src = "VAR_GLOBAL CONSTANT
@@ -336,7 +338,7 @@ END_PROGRAM
     );
     assert_eq!(
         trace,
-        "cycle,time_ms,cMinTime,cMinL,cT,cR,cMs,cSec,Main.same\n0,0,T#0ms,T#2ms,T#1000ms,T#2500us,1500,0.25,1\n"
+        "cycle,time_ms,cMinTime,cMinL,cT,cR,cMs,cSec,Main.same\n0,0,T#0ms,T#2ms,T#1000ms,T#2ms,1500,0.25,1\n"
     );
 }
 

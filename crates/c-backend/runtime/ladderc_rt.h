@@ -45,6 +45,12 @@
 #ifndef LADDERC_TIME_UNIT_NS
 #define LADDERC_TIME_UNIT_NS INT64_C(1000000)
 #endif
+/* Whether a real number converted to TIME is rounded to whole units first (1 under milliseconds:
+   TIME is a count of milliseconds in CODESYS and TwinCAT, REAL_TO_TIME(1.5) is T#2ms; 0 under
+   seconds, matiec's __real_to_time keeps the fraction). LTIME always keeps its nanoseconds. */
+#ifndef LADDERC_REAL_TO_TIME_WHOLE_UNITS
+#define LADDERC_REAL_TO_TIME_WHOLE_UNITS 1
+#endif
 
 /* ------------------------------------------------------------------ elementary types */
 typedef uint8_t IEC_BOOL; /* always 0 or 1 */
@@ -275,6 +281,15 @@ static inline float ladderc_lreal_to_real(double x) {
         return neg ? -INFINITY : INFINITY;
     }
     return (float)x;
+}
+/* REAL_TO_TIME, LREAL_TO_TIME: `units` is a number of the profile's unit (LADDERC_TIME_UNIT_NS);
+   rounded to a whole number of units (halves to even) under LADDERC_REAL_TO_TIME_WHOLE_UNITS, else
+   to the nanosecond; saturated (and flagged) outside the 64-bit range. */
+static inline IEC_TIME ladderc_real_to_time(double units) {
+#if LADDERC_REAL_TO_TIME_WHOLE_UNITS
+    if (units == units) units = ladderc_round_half_even(units);
+#endif
+    return (IEC_TIME)ladderc_real_to_int(units * (double)LADDERC_TIME_UNIT_NS, INT64_MIN, INT64_MAX);
 }
 /* REAL_TO_TIME and friends: x is in milliseconds. */
 static inline IEC_TIME ladderc_ms_to_time(double ms) { return (IEC_TIME)ladderc_real_to_int(ms * 1e6, INT64_MIN, INT64_MAX); }

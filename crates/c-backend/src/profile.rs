@@ -87,6 +87,16 @@ impl TimeNumberUnit {
             TimeNumberUnit::Seconds => 1_000_000_000,
         }
     }
+    /// Whether a real number converted to TIME (`REAL_TO_TIME`, `LREAL_TO_TIME`) is rounded to a
+    /// whole number of units (to the nearest, halves to even, as every REAL to integer conversion):
+    /// under milliseconds, since TIME is a 32-bit count of milliseconds in CODESYS and TwinCAT and
+    /// their `REAL_TO_<type>` rounds to the nearest integer (Beckhoff infosys, `"REAL/LREAL_TO_<type>"`:
+    /// the exceptions are only STRING, BOOL, REAL and LREAL), so `REAL_TO_TIME(1.5)` is `T#2ms`;
+    /// not under seconds, where matiec's `__real_to_time` keeps the fraction (`T#1.5s`). LTIME (a
+    /// count of nanoseconds in CODESYS and TwinCAT) keeps its nanoseconds under either unit.
+    pub fn rounds_real_to_time(self) -> bool {
+        self == TimeNumberUnit::Milliseconds
+    }
     /// The unit's name as the profile writes it (`ms`, `s`).
     pub fn name(self) -> &'static str {
         match self {

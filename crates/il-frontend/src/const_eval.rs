@@ -363,6 +363,14 @@ fn convert(upper: &str, f: &str, args: &[ConstNum]) -> Result<ConstNum, String> 
         return match v {
             ConstNum::Int(i) => duration(i.checked_mul(unit)),
             ConstNum::Real(x) => {
+                // TIME under milliseconds holds whole milliseconds (CODESYS, TwinCAT: TIME is
+                // a count of ms and REAL_TO_<type> rounds to the nearest integer), as the run
+                // time's `ladderc_real_to_time`; LTIME and seconds (matiec) keep nanoseconds
+                let x = if e == Elementary::Time && unit == 1_000_000 {
+                    x.round_ties_even()
+                } else {
+                    x
+                };
                 let ns = (x * unit as f64).round_ties_even();
                 to_int(ns, f).and_then(|n| duration(Some(n)))
             }

@@ -9,7 +9,9 @@
 //! archive object it comes from (so a diagnostic points at the step's or transition's lines); the
 //! words of a condition taken from a `<Transition>` object also carry where they stand in the
 //! object (`Tok::from`: the word in its ST text, or its LD/FBD network's element), where
-//! `twincat` has the diagnostics in them shown.
+//! `twincat` has the diagnostics in them shown; first the mark
+//! `crate::sfc::text::VENDOR_ORDER_MARK`, so that the chart runs in TwinCAT's "Processing Order
+//! in SFC" (actions first, the transition check last: `crate::sfc::chart::ScanOrder`).
 //! What the archive holds, read from the real files (the attributes of an object sit in
 //! `<l2 n="Attributes">`, keyed by GUID, each with a `Value` and a `DefaultValue`):
 //! - `38391c6d-...`: the name of a step, jump target, macro, branch or associated action; the
@@ -276,7 +278,12 @@ pub(crate) fn lower(
         .child("Declaration")
         .map(|d| d.text())
         .unwrap_or_default();
-    let mut head = Vec::new();
+    // a TwinCAT chart runs in TwinCAT's processing order (actions first, transition check last)
+    let mut head = vec![Tok {
+        text: crate::sfc::text::VENDOR_ORDER_MARK.to_string(),
+        at: 0,
+        from: None,
+    }];
     for (name, declare, at) in flags {
         let var = format!("SFC{name}");
         head.push(Tok {

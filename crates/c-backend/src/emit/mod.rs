@@ -291,6 +291,12 @@ fn config_header_with(p: &TargetProfile, ext: [u32; 3]) -> String {
         "#define LADDERC_TIME_UNIT_NS INT64_C({})",
         p.time_number_unit.nanoseconds()
     );
+    // whether REAL_TO_TIME rounds to whole units (`TimeNumberUnit::rounds_real_to_time`)
+    let _ = writeln!(
+        s,
+        "#define LADDERC_REAL_TO_TIME_WHOLE_UNITS {}",
+        u8::from(p.time_number_unit.rounds_real_to_time())
+    );
     let _ = writeln!(s, "#define LADDERC_ALIGNMENT {}\n#endif", p.alignment);
     s
 }

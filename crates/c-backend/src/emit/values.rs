@@ -120,7 +120,8 @@ fn conversion(from: &Type, to: &Type) -> Option<(Elementary, Elementary)> {
 
 /// `X_TO_Y` semantics: integers wrap to the target width, REAL to integer rounds to nearest (halves
 /// to even) and saturates, LREAL to REAL overflows to an infinity, TIME and LTIME to/from numbers
-/// count the profile's unit (milliseconds by default), TOD milliseconds, DT and DATE seconds since 1970-01-01 (a number to DATE keeps the seconds
+/// count the profile's unit (milliseconds by default; a real number to TIME rounds to whole
+/// milliseconds there, LTIME keeps nanoseconds: `TimeNumberUnit::rounds_real_to_time`), TOD milliseconds, DT and DATE seconds since 1970-01-01 (a number to DATE keeps the seconds
 /// below a day, see [`within_day`]), anything to BOOL is `<> 0`.
 pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
     if f == t {
@@ -141,6 +142,10 @@ pub fn convert_elementary(x: &str, f: Elementary, t: Elementary) -> String {
         }
         if t.is_real() {
             return cfmt!("(({ct})({x}))");
+        }
+        if t == E::Time {
+            // a whole number of milliseconds under "ms" (`ladderc_real_to_time`)
+            return cfmt!("ladderc_real_to_time((double)({x}))");
         }
         if time_like(t) {
             let (_, unit_real) = number_unit(t);

@@ -156,6 +156,25 @@ pub struct Chart<'e, 'a> {
     /// The SFC flags the export enables for the chart (CODESYS vendor data of the POU or action,
     /// [`super::flags::read`]); empty when read from the body alone.
     pub flags: Vec<super::flags::Flag>,
+    /// In which order a scan runs the chart's transitions and actions.
+    pub order: ScanOrder,
+}
+
+/// In which order one scan of a chart evaluates its transitions and runs its actions. IEC 61131-3
+/// leaves it open (ed. 2 2.6.5 only says a step activated by a transition becomes active and its
+/// actions run; it fixes no scan for that).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ScanOrder {
+    /// ladderc's order for PLCopen XML and textual charts: the transitions are evaluated at the
+    /// start of the scan, and a step activated by them runs its actions in the same scan.
+    #[default]
+    TransitionsFirst,
+    /// TwinCAT 3 and CODESYS ("Processing Order in SFC", Beckhoff infosys tc3_plc_intro and the
+    /// CODESYS SFC help): the actions of the active steps first (exit, entry, step time and step
+    /// actions, IEC actions), the transition check last, so a step activated in scan k runs its
+    /// actions from scan k+1 and a step left in scan k runs its exit action and the final scan of
+    /// its IEC actions in scan k+1. Charts read from a TwinCAT `.TcPOU`.
+    ActionsFirst,
 }
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -633,6 +652,7 @@ pub fn read<'e, 'a>(ctx: &mut Ctx, sfc: &'e Element<'a>, pou: &str) -> Chart<'e,
         associations,
         network_elements,
         flags: Vec::new(),
+        order: ScanOrder::TransitionsFirst,
     }
 }
 

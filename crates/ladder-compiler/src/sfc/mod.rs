@@ -2,7 +2,8 @@
 //!
 //! Input: a POU's `<SFC>` element, the POU (interface) and the project index. Output: IL statements for
 //! one scan of the chart and the hidden variables they use (one extra `VAR` block).
-//! Invariants: every scan runs, in this order (documented in the README):
+//! Invariants: every scan of a chart in IEC order ([`chart::ScanOrder::TransitionsFirst`]: PLCopen
+//! XML and textual charts) runs, in this order (documented in the README):
 //! 0. with CODESYS's SFCInit or SFCReset enabled and TRUE ([`flags`]), the chart's reset: initial
 //!    steps active, the others inactive, step times 0 (SFCInit also keeps transitions from firing
 //!    and the initial steps from the action control while TRUE);
@@ -15,6 +16,15 @@
 //! 4. step elapsed times (`Step.T`, a TON per step);
 //! 5. action control for every action (IEC ACTION_CONTROL), then action bodies whose `A` is TRUE
 //!    (an action of an FB instance, or one whose body is a chart of its own, is a `CAL` there).
+//!
+//! A chart read from a TwinCAT `.TcPOU` ([`chart::ScanOrder::ActionsFirst`]) runs in TwinCAT's and
+//! CODESYS's documented "Processing Order in SFC" (Beckhoff infosys tc3_plc_intro; CODESYS SFC
+//! help): 0, the step times, 5 (so the actions of the steps active since the end of the last
+//! scan, the exit actions and final scans of the steps left then), and last 1 to 3, the
+//! transition check (the step times after the evolution are not refreshed; a step left and
+//! re-entered by one transition still restarts its time). A step activated in scan k runs its
+//! actions from scan k+1; `Step.X` read after the chart is the next scan's activation (CODESYS's
+//! `Step._x`).
 //!
 //! A chart may also be the body of a POU's action ([`crate::body`]): its hidden variables are then
 //! renamed per action ([`names::in_action`]), except a flag variable ladderc declares
@@ -172,6 +182,10 @@ pub fn lower_chart<'e, 'a>(
 
     // Step times, refreshed with this scan's clock before the conditions read them.
     step_times(&chart.steps, &mut hidden, &mut out);
+
+    // Where the transitions' part of the scan begins (moved after the actions' part for a chart
+    // in TwinCAT's order, `ScanOrder::ActionsFirst`).
+    let transitions_start = out.len();
 
     // 1. Conditions.
     let connected: Vec<&chart::Transition> = chart
@@ -370,7 +384,12 @@ pub fn lower_chart<'e, 'a>(
             s.span,
         ));
     }
-    step_times(&chart.steps, &mut hidden, &mut out);
+    if chart.order == chart::ScanOrder::TransitionsFirst {
+        step_times(&chart.steps, &mut hidden, &mut out);
+    }
+    // (in TwinCAT's order the step times of the next scan's start are the refresh: a step
+    // activated now has `Step.T` = 0 in its first scan of actions, as in IEC order)
+    let actions_start = out.len();
 
     // 5. Actions: control, then bodies. While SFCInit holds the chart, the action control sees
     // its initial steps inactive (they stay active for conditions and bodies).
@@ -409,6 +428,10 @@ pub fn lower_chart<'e, 'a>(
         out.push(il::jump_if_false(&skip, a.span));
         out.extend(code);
         out.push(il::label(&skip, a.span));
+    }
+    if chart.order == chart::ScanOrder::ActionsFirst {
+        // TwinCAT's processing order: the actions' part, then the transitions' part
+        out[transitions_start..].rotate_left(actions_start - transitions_start);
     }
 
     // Chart names in conditions and bodies.

@@ -8,7 +8,9 @@
 //! condition and action bodies (their text segments point into the `.st` file, so every span of the
 //! lowered code and every diagnostic is located in the `.st` file); no second SFC semantics.
 
-use super::chart::{report, Association, Chart, CondSource, Step, StepAction, Transition};
+use super::chart::{
+    report, Association, Chart, CondSource, ScanOrder, Step, StepAction, Transition,
+};
 use crate::context::Ctx;
 use crate::project::{Index, PouSig};
 use crate::xml::{Arena, Element, SegKind, TextSeg};
@@ -352,6 +354,7 @@ pub fn lower(
         associations,
         network_elements: Vec::new(),
         flags: flag_marks(file, src, &body),
+        order: scan_order(src, &body),
     };
     let sfc_el = element("SFC", "SFC", body.start..body.start);
     let step_names = chart.steps.iter().map(|s| s.name.clone()).collect();
@@ -363,6 +366,23 @@ pub fn lower(
 /// SFC settings): one comment per flag in the chart's body, `(*__SFC_FLAG Init 1 4711*)`: the
 /// flag's name, whether TwinCAT declares its variable (1) and the offset of the setting in the file.
 pub const FLAG_MARK: &str = "__SFC_FLAG";
+
+/// How the TwinCAT reader (`crate::twincat_sfc`) says that a chart is TwinCAT's, so that it runs
+/// in TwinCAT's processing order ([`ScanOrder::ActionsFirst`]): this comment in the chart's body.
+pub const VENDOR_ORDER_MARK: &str = "(*__SFC_ORDER ActionsFirst*)";
+
+/// The scan order of the chart in `src[body]`: TwinCAT's when the TwinCAT reader marked it
+/// ([`VENDOR_ORDER_MARK`]), else IEC's (ladderc's order of textual and PLCopen XML charts).
+fn scan_order(src: &str, body: &Range<usize>) -> ScanOrder {
+    if src
+        .get(body.clone())
+        .is_some_and(|t| t.contains(VENDOR_ORDER_MARK))
+    {
+        ScanOrder::ActionsFirst
+    } else {
+        ScanOrder::TransitionsFirst
+    }
+}
 
 /// The flags of the marks ([`FLAG_MARK`]) in `src[body]`.
 fn flag_marks(file: FileId, src: &str, body: &Range<usize>) -> Vec<super::flags::Flag> {
