@@ -727,6 +727,7 @@ impl Rewriter<'_, '_> {
                     *target = r;
                     self.changed = true;
                 }
+                self.indexes(target);
                 if let Some(i) = self.place_interface(target).cloned() {
                     if let Some(out) = self.assign_interface(target, &i, value, span) {
                         self.changed = true;
@@ -1540,6 +1541,20 @@ impl Rewriter<'_, '_> {
 
     /// The comparisons of interfaces inside `e`: `itf = 0` (`<> 0`, `NULL`) tests the tag,
     /// `i1 = i2` the tags and the references.
+    /// The index expressions of place `p`, rewritten as [`Self::compare`] does an expression
+    /// (`arr[ifut.executor.level]`: the index reads the result of a call through an interface,
+    /// `ifut.__M___GET_EXECUTOR`, kept in a variable of the caller; before issue #13's round 34
+    /// an index was left as it was: E1021 "I_Future has no field `__GET_EXECUTOR`").
+    fn indexes(&mut self, p: &mut Place) {
+        for a in p.accessors.iter_mut() {
+            if let Accessor::Index(ix) = a {
+                for x in ix.iter_mut() {
+                    self.compare(x);
+                }
+            }
+        }
+    }
+
     fn compare(&mut self, e: &mut Expr) {
         let span = e.span;
         let replacement = match &mut e.kind {
@@ -1608,10 +1623,13 @@ impl Rewriter<'_, '_> {
                 kind: ExprKind::Error,
                 span,
             },
-            ExprKind::Place(p) => match self.interface_result_read(p) {
-                Some(r) => place_expr(r, span),
-                None => return,
-            },
+            ExprKind::Place(p) => {
+                self.indexes(p);
+                match self.interface_result_read(p) {
+                    Some(r) => place_expr(r, span),
+                    None => return,
+                }
+            }
             ExprKind::Call { name, args } => {
                 for a in args.iter_mut() {
                     self.compare(&mut a.value);

@@ -24,7 +24,9 @@
 //! refers to an instance (`fut.executor.keepJob := TRUE;` sets keepJob of that instance). A property read in an ELSIF or WHILE condition is evaluated
 //! where the condition is (the IF is split at that ELSIF, the loop tests it after calling the
 //! getter); one in an UNTIL condition is a getter call in place, run before each test as a method
-//! call there is (`super::lower::method_flow`; E0108 before issue #13's Session 36).
+//! call there is (`super::lower::method_flow`; E0108 before issue #13's Session 36), and what
+//! follows the property there (`UNTIL fut.executor.keepJob`) reaches the getter's result as a
+//! call chain's rest does (`super::lower::call_chain`).
 
 use super::ast::{
     Accessor, Arg, ArgDir, CondBranch, Expr, ExprKind, Place, PlaceBase, Stmt, StmtKind,
@@ -574,6 +576,47 @@ impl Rewriter<'_, '_> {
         }
     }
 
+    /// The read of place `p`, whose property at `at` has the Get accessor `getter` (`inst.__GET_P`),
+    /// as a getter call that stands where the read is (an UNTIL condition): the call alone for the
+    /// property itself (`UNTIL inst.P`); for an access going on past the property (`UNTIL
+    /// fut.executor.keepJob`, `fut.worker.count > 2`, `a.P[i]`, `a.Ptr^.x`) the call chain
+    /// `fut.__GET_EXECUTOR().keepJob`, whose rest reaches the getter's result as the rest of
+    /// any method's chain does (`super::lower::call_chain`: an interface or `REFERENCE TO`
+    /// result is the instance it refers to, a property of it its accessors again). Before issue
+    /// #13's round 34 the rest was dropped: the condition read the getter's result itself (E1006
+    /// "cannot store I_Job into BOOL").
+    fn getter_in_place(p: &Place, at: At, getter: Place, span: Span) -> Expr {
+        let next = match at {
+            At::Base => 0,
+            At::Own => 1,
+            At::Field(k) => k + 1,
+        };
+        let rest = p.accessors.get(next..).unwrap_or_default();
+        if rest.is_empty() {
+            return super::lower::method_flow::method_call_expr(getter, Vec::new(), span);
+        }
+        let mut chain = getter;
+        let name_end = match chain.accessors.last() {
+            Some(Accessor::Field(m)) => m.span,
+            _ => match &chain.base {
+                PlaceBase::Name(n) => n.span,
+                PlaceBase::Address(_) => chain.span,
+            },
+        };
+        chain.accessors.push(Accessor::Call {
+            args: Vec::new(),
+            span: Span {
+                start: name_end.end,
+                ..name_end
+            },
+        });
+        chain.accessors.extend(rest.iter().cloned());
+        Expr {
+            span,
+            kind: ExprKind::Place(chain),
+        }
+    }
+
     fn error(&mut self, c: diagnostics::Code, span: Span, msg: String, hint: &str) {
         self.changed = true;
         self.diags.push(
@@ -625,7 +668,7 @@ impl Rewriter<'_, '_> {
                 }
                 let callee = Self::with_member(p, at, getter(&name.name), name.span, false);
                 if self.in_place {
-                    *e = super::lower::method_flow::method_call_expr(callee, Vec::new(), e.span);
+                    *e = Self::getter_in_place(p, at, callee, e.span);
                     self.changed = true;
                     return;
                 }
