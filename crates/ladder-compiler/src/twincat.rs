@@ -751,7 +751,8 @@ fn transition_object(file: FileId, t: &Element, what: &str) -> TransitionObject 
 
 /// Writes a body into place from `at` (ST: its text where it is; LD/FBD: its temporaries' VAR
 /// block when `declares`, then its tokens, each at or after the element it comes from, all inside
-/// the `<NWL>` element); the offset after it.
+/// the `<NWL>` element; a token written after its element, because an earlier token stands
+/// beyond it, is recorded as moved, so its diagnostics point at its element); the offset after it.
 fn write_body(
     file: FileId,
     out: &mut Source,
@@ -800,8 +801,22 @@ fn write_body(
     // one text for the diagnostics placed there
     let mut group = 0u32;
     let mut moving = false;
-    for (text, pref, original) in words {
+    let mut late_at = None;
+    for (text, pref, mut original) in words {
         let from = if pref > at && pref < limit { pref } else { at };
+        // a word whose element lies before the words already written (a box's output operand,
+        // written after the box's inputs, `fb(in := ..., out => x)`) cannot stand there: its
+        // diagnostics are shown at its element (README "diagnostics": a network element's
+        // diagnostic is located at that element)
+        if original.is_none() && pref != 0 && pref < at && pref >= nwl.tag_start() {
+            if late_at != Some(pref) {
+                group += 1;
+            }
+            late_at = Some(pref);
+            original = Some(pref);
+        } else if late_at.take().is_some() {
+            group += 1;
+        }
         let mut place = |from: usize| match original {
             Some(o) => out.place_moved(from, limit, &text, o, group),
             None => out.place(from, limit, &text),

@@ -990,7 +990,18 @@ impl Session {
         };
         let dropped = crate::split_blocks::drop_stub_types(&mut units, &stubs, folder, file_name);
         self.stub_types.extend(dropped);
-        il_frontend::st::file::compile_pending(&mut units, &pending, &mut self.diags);
+        // the motion libraries' enumeration constants (`MC_Positive_Direction`), declared for
+        // the checks later (`param_passing::prelude`), are USINT in the ST bodies too
+        let library_constants: Vec<(&str, &str)> = param_passing::prelude::ENUM_CONSTANTS
+            .iter()
+            .map(|(name, _)| (*name, "USINT"))
+            .collect();
+        il_frontend::st::file::compile_pending_with_library(
+            &mut units,
+            &pending,
+            &library_constants,
+            &mut self.diags,
+        );
         // a file's description and attribute pragmas (`{ DE:"..." }` on each variable): one note
         il_frontend::st::lexer::collapse_metadata_notes(&mut self.diags);
         crate::textual_sfc::lower_textual_sfc(&mut units, &pending, &self.map, &mut self.diags);

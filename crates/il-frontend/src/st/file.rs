@@ -2867,6 +2867,20 @@ pub fn compile_pending(
     pending: &[PendingBody],
     diags: &mut Diagnostics,
 ) {
+    compile_pending_with_library(units, pending, &[], diags);
+}
+
+/// [`compile_pending`], the bodies also seeing the global constants of a block library the
+/// program is checked against later (`library_constants`: name and elementary type, e.g. Tc2_MC2's
+/// `MC_Positive_Direction : USINT`), where the program declares no global of that name: a value
+/// computed from them (`SEL(c, MC_Positive_Direction, MC_Negative_Direction)` given to a block's
+/// input) is kept in a temporary of their type, not of the DINT an unknown value would get.
+pub fn compile_pending_with_library(
+    units: &mut [CompilationUnit],
+    pending: &[PendingBody],
+    library_constants: &[(&str, &str)],
+    diags: &mut Diagnostics,
+) {
     // structures that EXTEND others get their bases' fields (from any unit)
     super::struct_extends::flatten(units);
     if pending.is_empty() {
@@ -3007,6 +3021,12 @@ pub fn compile_pending(
         }
     }
     let mut decls = super::Declarations::from_units(units);
+    for (name, ty) in library_constants {
+        decls
+            .globals
+            .entry(name.to_ascii_uppercase())
+            .or_insert_with(|| super::infer::named(ty, Span::new(FileId(0), 0, 0)));
+    }
     decls.assigns_missing_result = missing_result_assigners(units, pending);
     for pb in pending.iter().filter(|pb| !pb.methods.is_empty()) {
         for unit in units.iter() {
