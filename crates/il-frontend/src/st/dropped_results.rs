@@ -7,8 +7,8 @@
 //! would report it at the next statement's first load. Before round 34 it did: an IL hint in an
 //! ST file, and a "replaced here" label on a literal of the next statement.
 //!
-//! Input: the spans of those call statements, recorded by the lowering ([`record`]) as it lowers
-//! them. Output: [`is_dropped`], which sema asks before it reports an unused result. Invariants:
+//! Input: the spans of those call statements, recorded by the lowering (`record`) as it lowers
+//! them. Output: `is_dropped`, which sema asks before it reports an unused result. Invariants:
 //! the table is per thread and per compilation ([`forget`] empties it as a compilation starts
 //! reading its inputs, as `crate::actions::forget_spellings` does for its table); an IL file's
 //! instructions are never recorded, so an IL result left unused keeps its W1001.
