@@ -40,6 +40,13 @@ pub const FLAG_PREFIX: &str = "__ACTION_";
 /// The label that starts an action's statements in its POU's body.
 const LABEL_PREFIX: &str = "__ACT_";
 
+/// The name of the action (or method) whose statements label `label` starts in its POU's body
+/// (`__ACT_<NAME>`, see [`link`]), upper-case; `None` for any other label (the label after them,
+/// `__ACT_END<round>`, gives `END<round>`).
+pub fn action_of_label(label: &str) -> Option<&str> {
+    label.strip_prefix(LABEL_PREFIX)
+}
+
 /// The actions [`link`] read, and which it linked (POU and action, upper-case): what
 /// [`with_uncalled`] needs to check those nothing calls.
 #[derive(Debug, Default)]

@@ -345,6 +345,8 @@ impl Session {
         // the spellings of methods' variables in messages: this compilation's only (a language
         // server compiles again and again on one thread)
         il_frontend::actions::forget_spellings();
+        // the ST call statements that drop a function's result: this compilation's only
+        il_frontend::st::dropped_results::forget();
         let mut units = Vec::new();
         let mut pending = Vec::new();
         let mut var_config = Vec::new();

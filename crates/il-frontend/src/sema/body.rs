@@ -181,6 +181,10 @@ pub(super) struct Body<'a, 'd> {
     /// (`__MD_<M>_<X>`): the `ST` after it restarts the variable at the method's start, no copy
     /// the user wrote (no W1437 for an instance restarted so).
     pub(super) loaded_method_default: bool,
+    /// Whether the walk is in the statements of the block's `FB_init` / `FB_reinit` (behind their
+    /// `__ACT_` label, `crate::actions`): writes of the block's own inputs there set up the
+    /// instance, no W1411 (`places`).
+    pub(super) in_instance_setup: bool,
 }
 
 impl Analyzer<'_> {
@@ -207,6 +211,7 @@ impl Analyzer<'_> {
             call_address: None,
             instance_args: false,
             loaded_method_default: false,
+            in_instance_setup: false,
         };
         b.scope_reference_inputs(&pou.body);
         // Pass 1, silent: what the backward jumps bring. Without backward jumps it would find nothing
@@ -238,6 +243,7 @@ impl Analyzer<'_> {
         b.recs.clear();
         b.pending.clear();
         b.pos = 0;
+        b.in_instance_setup = false;
         b.walk_top(&pou.body);
         for (slot, r) in std::mem::take(&mut b.pending) {
             let facts = b.finish(r);
@@ -367,7 +373,12 @@ impl Body<'_, '_> {
             self.pos += 1;
             let st = &mut top.st;
             match s {
-                IlStmt::Label(l) => self.enter_label(l, st),
+                IlStmt::Label(l) => {
+                    if let Some(action) = crate::actions::action_of_label(&l.name) {
+                        self.in_instance_setup = crate::st::fb_init::is_instance_setup(action);
+                    }
+                    self.enter_label(l, st)
+                }
                 IlStmt::Instr(i) => {
                     if !st.reach {
                         if !st.warned_unreachable {
@@ -680,6 +691,9 @@ impl Body<'_, '_> {
             .cr
             .fresh
             .filter(|_| !st.cr.ty.as_ref().is_some_and(Ty::is_error))
+            // (nor after an ST call statement of a function, which drops its result on purpose:
+            // CODESYS, TwinCAT; `crate::st::dropped_results`)
+            .filter(|f| !crate::st::dropped_results::is_dropped(*f))
         {
             self.a
                 .warning(code::W1001, f, "this result is never used")

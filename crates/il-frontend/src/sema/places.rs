@@ -267,6 +267,12 @@ impl Body<'_, '_> {
             // IEC 61131-3 forbids it; CODESYS, TwinCAT and matiec (so Beremiz and OpenPLC projects)
             // accept it and write the POU's own copy of the input: so does ladderc, with a warning
             // at the first write of each input (the others write the same copy)
+            // FB_init / FB_reinit storing their extra inputs into the block's own inputs
+            // (`THIS^.src := src;`): the documented TwinCAT/CODESYS way to give an instance its
+            // initial inputs, run once before its first call (`st::fb_init::is_instance_setup`)
+            if self.in_instance_setup {
+                return;
+            }
             if self.a.silent || !self.a.written_inputs.insert(decl) {
                 return;
             }

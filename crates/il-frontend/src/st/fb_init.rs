@@ -1202,6 +1202,23 @@ fn int(i: i128, span: Span) -> Expr {
     Expr::literal(LiteralKind::Int(i), span)
 }
 
+/// Whether a method runs only to set up an instance (`FB_init`, `FB_reinit`, and a base's
+/// `__S<level>_FB_INIT` / `__S<level>_FB_REINIT`): its writes of the block's own inputs give the
+/// instance its initial inputs (Beckhoff Infosys "Methods FB_init, FB_reinit and FB_exit": the
+/// additional inputs of FB_init initialise the instance; CODESYS "Method: FB_Init, FB_Reinit,
+/// FB_Exit"), so sema gives no W1411 there (round 34).
+pub fn is_instance_setup(name: &str) -> bool {
+    let u = name.to_ascii_uppercase();
+    let own = match u.strip_prefix("__S") {
+        Some(rest) => {
+            let rest = rest.trim_start_matches(|c: char| c.is_ascii_digit());
+            rest.strip_prefix('_').unwrap_or(rest)
+        }
+        None => u.as_str(),
+    };
+    own == "FB_INIT" || own == "FB_REINIT"
+}
+
 /// Whether a method is one the runtime calls with every argument (`FB_init`, `FB_reinit`,
 /// `FB_exit`, and a base's `__S<level>_FB_INIT`): its inputs get no per-call defaults.
 pub fn is_special_method(name: &str) -> bool {

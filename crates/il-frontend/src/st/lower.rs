@@ -1723,6 +1723,8 @@ impl<'d> PouLowering<'d> {
                     span,
                 };
                 self.result_dropped = true;
+                // (its value stays the current result, unused: no W1001, see `dropped_results`)
+                super::dropped_results::record(span);
                 self.value(&e, out, diags);
                 self.result_dropped = false;
                 // `e` is dropped here: forget the types keyed by its nodes' addresses.

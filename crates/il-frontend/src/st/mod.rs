@@ -20,6 +20,7 @@ pub mod base_view;
 mod classes;
 mod conditional;
 mod conflict_markers;
+pub mod dropped_results;
 pub mod fb_init;
 pub mod fb_init_args;
 pub mod file;
