@@ -5,7 +5,7 @@
 //! (halves, negatives, limits, NaN and infinities). The rules (crates/c-backend/README.md,
 //! "Conversions"): REAL/LREAL to integers round to nearest with halves to even and saturate, NaN gives
 //! 0; TRUNC truncates toward zero and saturates; integers wrap to the target width; TIME and TOD
-//! convert from and to milliseconds, DT and DATE seconds, edition 3's LDT, LDATE and LTOD
+//! convert from and to milliseconds (a REAL to TIME rounded to whole milliseconds, halves to even), DT and DATE seconds, edition 3's LDT, LDATE and LTOD
 //! nanoseconds (a number to DATE keeps all its seconds, to TOD the time of day; DT and LDT convert to the
 //! date and the time of day of either length; CODESYS's DATE_TO_DT is the date at midnight,
 //! TOD_TO_TIME the duration since midnight, TIME_TO_TOD the duration's time of day); LREAL to REAL rounds to nearest and overflows to an
@@ -452,7 +452,13 @@ fn expected(name: &str, from: &str, to: &str, x: &V) -> Want {
                 Want::Text(((*r != 0.0) as u8).to_string())
             } else if is_real(to) {
                 real_of(to, *r)
+            } else if to == "TIME" {
+                // TIME counts whole milliseconds as CODESYS and TwinCAT (round 34,
+                // `time_number_unit` "ms"): the number is rounded first, halves to even
+                let ms = if r.is_nan() { *r } else { r.round_ties_even() };
+                Want::Ns(round_sat(ms * 1e6, "LINT", false))
             } else if is_time(to) {
+                // LTIME keeps the fraction of a millisecond
                 Want::Ns(round_sat(r * 1e6, "LINT", false))
             } else if is_date(to) {
                 let ns = round_sat(r * date_unit(to) as f64, "LINT", false);
