@@ -10,7 +10,8 @@
 //!
 //! Input: the text of a file whose language was detected as IL. Output: `None` when some line
 //! (outside comments) starts with an IL operator, a keyword of IEC 61131-3 (`FUNCTION_BLOCK`,
-//! `VAR`, `TYPE` ...) or a label; else the one E1107 at the first line that is no comment.
+//! `VAR`, `TYPE` ...) or a label, or when it holds a rung drawn in text (the IL/ST reader's one E1091
+//! says more); else the one E1107 at the first line that is no comment.
 //! Invariant: one pass over the text, no recursion.
 
 use diagnostics::{code, Diagnostic, FileId, Span};
@@ -83,6 +84,10 @@ fn starts_program_text(text: &str) -> bool {
 /// The one E1107 when the text `src` of `file` (its language detected as IL) holds no line of a
 /// program (see the module documentation); `None` otherwise.
 pub fn check(file: FileId, src: &str) -> Option<Diagnostic> {
+    // a rung drawn in text is the one E1091 of the IL/ST reader (`diag_r31_run.rs`), which says more
+    if il_frontend::st::holds_text_ladder(src) {
+        return None;
+    }
     let lines = code_lines(src);
     if lines.iter().any(|(_, t)| starts_program_text(t)) {
         return None;

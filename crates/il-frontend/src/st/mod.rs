@@ -68,6 +68,13 @@ use crate::ast::{IlStmt, Pou, VarBlock, VarKind};
 use crate::{FileId, Span};
 use diagnostics::Diagnostics;
 
+/// Whether `src` holds a ladder rung drawn in text (ASCII art), which reading it as IL or ST
+/// reports as the one E1091 (`text_ladder`); callers that would give another diagnostic for the
+/// whole file first let that one speak.
+pub fn holds_text_ladder(src: &str) -> bool {
+    text_ladder::text_ladder(FileId::default(), src).is_some()
+}
+
 /// Parses a statement list (a whole ST body, an SFC action). `base` is the byte offset of `src` in
 /// `file`: every span points into that file. Syntax errors are reported; the statements that could be
 /// read are returned.
